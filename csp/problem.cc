@@ -1,0 +1,120 @@
+#include "csp/problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sightline::csp {
+
+VariableId Problem::add_variable(std::string name, Domain domain) {
+  if (name.empty()) throw std::invalid_argument("a variable needs a name");
+  const auto id = static_cast<VariableId>(variables_.size());
+  if (!variable_ids_.emplace(name, id).second) {
+    throw std::invalid_argument("variable '" + name + "' is defined twice");
+  }
+  variables_.push_back({std::move(name), std::move(domain)});
+  incidence_.emplace_back();
+  return id;
+}
+
+ConstraintId Problem::add_constraint(std::unique_ptr<Constraint> constraint) {
+  const auto scope = constraint->scope();
+  if (scope.empty()) throw std::invalid_argument("a constraint needs at least one variable");
+  for (VariableId v : scope) {
+    if (v >= variables_.size()) {
+      throw std::invalid_argument("constraint scope names variable id " + std::to_string(v) +
+                                  " but the problem has " + std::to_string(variables_.size()));
+    }
+  }
+  // Repeated variables would make one-variable deltas wrong; refuse them.
+  std::vector<VariableId> sorted(scope.begin(), scope.end());
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i] == sorted[i - 1]) {
+      throw std::invalid_argument("variable '" + variables_[sorted[i]].name +
+                                  "' appears twice in one constraint's scope");
+    }
+  }
+  const auto id = static_cast<ConstraintId>(constraints_.size());
+  for (std::size_t i = 0; i < scope.size(); ++i) {
+    incidence_[scope[i]].push_back({id, static_cast<std::uint32_t>(i)});
+  }
+  constraints_.push_back(std::move(constraint));
+  return id;
+}
+
+std::optional<VariableId> Problem::find_variable(std::string_view name) const {
+  auto it = variable_ids_.find(std::string(name));
+  if (it == variable_ids_.end()) return std::nullopt;
+  return it->second;
+}
+
+bool Problem::all_discrete() const {
+  for (const auto& v : variables_) {
+    if (!v.domain.is_discrete()) return false;
+  }
+  return true;
+}
+
+bool Problem::all_continuous() const {
+  for (const auto& v : variables_) {
+    if (!v.domain.is_continuous()) return false;
+  }
+  return true;
+}
+
+Score Problem::constraint_score(ConstraintId id, std::span<const double> values) const {
+  const Constraint& c = *constraints_[id];
+  const double weighted = c.weight() * c.violation(values);
+  return c.is_hard() ? Score{weighted, 0} : Score{0, weighted};
+}
+
+Score Problem::score(std::span<const double> values) const {
+  Score total;
+  for (ConstraintId id = 0; id < constraints_.size(); ++id) total += constraint_score(id, values);
+  return total;
+}
+
+std::vector<ConstraintCost> Problem::breakdown(std::span<const double> values) const {
+  std::vector<ConstraintCost> out;
+  out.reserve(constraints_.size());
+  for (ConstraintId id = 0; id < constraints_.size(); ++id) {
+    const Constraint& c = *constraints_[id];
+    const double v = c.violation(values);
+    out.push_back({id, v, c.weight() * v, c.is_hard()});
+  }
+  return out;
+}
+
+Score Problem::delta(std::span<double> values, VariableId var, double new_value) const {
+  Score before, after;
+  for (const Incidence& inc : incidence_[var]) before += constraint_score(inc.constraint, values);
+  const double old_value = values[var];
+  values[var] = new_value;
+  for (const Incidence& inc : incidence_[var]) after += constraint_score(inc.constraint, values);
+  values[var] = old_value;
+  return after - before;
+}
+
+Assignment Problem::default_assignment() const {
+  Assignment a(variables_.size());
+  for (std::size_t i = 0; i < variables_.size(); ++i) a[i] = variables_[i].domain.middle();
+  return a;
+}
+
+void Problem::check_assignment(std::span<const double> values) const {
+  if (values.size() != variables_.size()) {
+    throw std::invalid_argument("assignment has " + std::to_string(values.size()) +
+                                " values but the problem has " +
+                                std::to_string(variables_.size()) + " variables");
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (std::isnan(values[i]) || !variables_[i].domain.contains(values[i])) {
+      throw std::invalid_argument("value " + std::to_string(values[i]) + " of variable '" +
+                                  variables_[i].name + "' is outside its domain " +
+                                  variables_[i].domain.describe());
+    }
+  }
+}
+
+}  // namespace sightline::csp

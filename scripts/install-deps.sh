@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs, from Debian 12's archive, whatever the build needs and the machine lacks.
+# Idempotent: does nothing (and asks no network) when everything is already there.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libboost-dev libboost-iostreams-dev libyaml-cpp-dev libceres-dev
+  libmuparser-dev libcli11-dev libstb-dev zlib1g-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi

@@ -1,0 +1,62 @@
+#include "solvers/pipeline.h"
+
+namespace sightline::solvers {
+
+Pipeline::Pipeline(std::string name, std::vector<std::unique_ptr<Solver>> stages)
+    : name_(std::move(name)), stages_(std::move(stages)) {}
+
+std::string Pipeline::unsuitable_reason(const csp::Problem& problem) const {
+  for (const auto& stage : stages_) {
+    if (std::string why = stage->unsuitable_reason(problem); !why.empty()) {
+      return stage->name() + ": " + why;
+    }
+  }
+  return "";
+}
+
+void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> start,
+                          const SolveContext& context, SolverResult& result) {
+  Budget budget(context.limits, 1);
+  result.best.assign(start.begin(), start.end());
+  result.score = problem.score(result.best);
+  result.evaluations = 1;
+  result.iterations = 0;
+  result.stop = StopReason::kCompleted;
+  result.message.clear();
+  SolveContext stage_context = context;
+  stage_context.want_breakdown = false;
+  for (std::size_t i = 0; i < stages_.size(); ++i) {
+    // Each stage gets what is left of the pipeline's limits.
+    SolveLimits& left = stage_context.limits;
+    const SolveLimits& all = context.limits;
+    if (all.max_evaluations) left.max_evaluations = all.max_evaluations - result.evaluations;
+    if (all.max_iterations) left.max_iterations = all.max_iterations - result.iterations;
+    if (all.time_limit_seconds > 0) {
+      left.time_limit_seconds = all.time_limit_seconds - budget.elapsed_seconds();
+      if (left.time_limit_seconds <= 0) {
+        result.stop = StopReason::kTimeLimit;
+        break;
+      }
+    }
+    stage_context.seed = context.seed + i;
+    stages_[i]->solve_into(problem, result.best, stage_context, stage_result_);
+    result.evaluations += stage_result_.evaluations;
+    result.iterations += stage_result_.iterations;
+    if (stage_result_.score.better_than(result.score)) {
+      result.best = stage_result_.best;
+      result.score = stage_result_.score;
+    }
+    result.stop = stage_result_.stop;
+    if (!stage_result_.message.empty()) {
+      result.message += (result.message.empty() ? "" : "; ") + stages_[i]->name() + ": " +
+                        stage_result_.message;
+    }
+    if (budget.exhausted(result.evaluations, result.iterations)) {
+      result.stop = budget.reason();
+      break;
+    }
+  }
+  finish_result(problem, context, budget, result);
+}
+
+}  // namespace sightline::solvers

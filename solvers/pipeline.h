@@ -1,0 +1,30 @@
+// Pipeline: solvers run one after another, each starting from the best of the one before.
+//
+// "sliding-octree>ceres-refine" is coarse global search followed by local refinement. The
+// pipeline's result is the best over all stages (a later stage can never make it worse),
+// with evaluations, iterations and time summed; limits apply to the whole pipeline.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "solvers/solver.h"
+
+namespace sightline::solvers {
+
+class Pipeline : public Solver {
+ public:
+  Pipeline(std::string name, std::vector<std::unique_ptr<Solver>> stages);
+  std::string name() const override { return name_; }
+  std::string unsuitable_reason(const csp::Problem& problem) const override;
+  void solve_into(const csp::Problem& problem, std::span<const double> start,
+                  const SolveContext& context, SolverResult& result) override;
+  const std::vector<std::unique_ptr<Solver>>& stages() const { return stages_; }
+
+ private:
+  std::string name_;
+  std::vector<std::unique_ptr<Solver>> stages_;
+  SolverResult stage_result_;
+};
+
+}  // namespace sightline::solvers

@@ -1,0 +1,74 @@
+#include "solvers/solver.h"
+
+#include <sstream>
+
+namespace sightline::solvers {
+
+const char* to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::kCompleted: return "completed";
+    case StopReason::kProvenOptimal: return "proven optimal";
+    case StopReason::kTargetReached: return "target reached";
+    case StopReason::kEvaluationLimit: return "evaluation limit";
+    case StopReason::kIterationLimit: return "iteration limit";
+    case StopReason::kTimeLimit: return "time limit";
+  }
+  return "?";
+}
+
+std::string SolverResult::brief_report(const std::string& solver_name) const {
+  std::ostringstream out;
+  out << solver_name << ": cost " << score.soft << (feasible() ? " feasible" : " INFEASIBLE");
+  if (!feasible()) out << " (hard violation " << score.hard << ")";
+  out << ", " << evaluations << " evaluations, " << iterations << " iterations, "
+      << wall_seconds << " s, stop: " << to_string(stop);
+  if (!message.empty()) out << " (" << message << ")";
+  return out.str();
+}
+
+std::string Solver::unsuitable_reason(const csp::Problem&) const { return ""; }
+
+SolverResult Solver::solve(const csp::Problem& problem, std::span<const double> start,
+                           const SolveContext& context) {
+  SolverResult result;
+  solve_into(problem, start, context, result);
+  return result;
+}
+
+Budget::Budget(const SolveLimits& limits, unsigned clock_stride)
+    : limits_(limits), clock_stride_(clock_stride ? clock_stride : 1),
+      start_(std::chrono::steady_clock::now()) {}
+
+bool Budget::exhausted(std::uint64_t evaluations, std::uint64_t iterations) {
+  if (limits_.max_evaluations && evaluations >= limits_.max_evaluations) {
+    reason_ = StopReason::kEvaluationLimit;
+    return true;
+  }
+  if (limits_.max_iterations && iterations >= limits_.max_iterations) {
+    reason_ = StopReason::kIterationLimit;
+    return true;
+  }
+  if (limits_.time_limit_seconds > 0 && ++calls_ % clock_stride_ == 0 &&
+      elapsed_seconds() >= limits_.time_limit_seconds) {
+    reason_ = StopReason::kTimeLimit;
+    return true;
+  }
+  return false;
+}
+
+double Budget::elapsed_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void finish_result(const csp::Problem& problem, const SolveContext& context,
+                   const Budget& budget, SolverResult& result) {
+  result.score = problem.score(result.best);
+  if (context.want_breakdown) {
+    result.breakdown = problem.breakdown(result.best);
+  } else {
+    result.breakdown.clear();
+  }
+  result.wall_seconds = budget.elapsed_seconds();
+}
+
+}  // namespace sightline::solvers
