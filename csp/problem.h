@@ -63,6 +63,9 @@ class Problem {
   const Variable& variable(VariableId id) const { return variables_[id]; }
   const std::vector<Variable>& variables() const { return variables_; }
   std::optional<VariableId> find_variable(std::string_view name) const;
+  // Re-parameterisation: replaces a variable's domain (the camera's search box moves with the
+  // character every frame). Constraints and the index are untouched.
+  void set_domain(VariableId id, Domain domain) { variables_[id].domain = std::move(domain); }
   const Constraint& constraint(ConstraintId id) const { return *constraints_[id]; }
   Constraint& mutable_constraint(ConstraintId id) { return *constraints_[id]; }
   std::span<const Incidence> incidences(VariableId id) const { return incidence_[id]; }
