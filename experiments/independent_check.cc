@@ -1,0 +1,63 @@
+#include "experiments/independent_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sightline::experiments {
+
+bool segment_blocked(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& a,
+                     const Eigen::Vector3d& b) {
+  const Eigen::Vector3d d = b - a;
+  for (const SolidBox& box : boxes) {
+    // Clip the parameter interval [0, 1] by the six half-spaces p_i >= min_i, p_i <= max_i.
+    double t0 = 0, t1 = 1;
+    bool outside = false;
+    for (int i = 0; i < 3 && !outside; ++i) {
+      const double p[2] = {-d[i], d[i]};
+      const double q[2] = {a[i] - box.min[i], box.max[i] - a[i]};
+      for (int k = 0; k < 2; ++k) {
+        if (p[k] == 0) {
+          if (q[k] < 0) outside = true;  // parallel and beyond this face
+        } else {
+          const double r = q[k] / p[k];
+          if (p[k] < 0) t0 = std::max(t0, r);
+          else t1 = std::min(t1, r);
+        }
+      }
+      if (t0 > t1) outside = true;
+    }
+    if (!outside) return true;
+  }
+  return false;
+}
+
+double distance_to_geometry(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const SolidBox& box : boxes) {
+    const Eigen::Vector3d nearest = p.cwiseMax(box.min).cwiseMin(box.max);
+    best = std::min(best, (p - nearest).norm());
+  }
+  return best;
+}
+
+double visible_body_fraction(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& eye,
+                             const Eigen::Vector3d& feet, const Eigen::Vector3d& size) {
+  // A 3 x 5 x 3 grid (x, y, z) over the box inset by 10%: 45 points, dense enough that one
+  // point is ~2% of the body, and independent of how the controller samples.
+  int visible = 0, total = 0;
+  for (int ix = 0; ix < 3; ++ix) {
+    for (int iy = 0; iy < 5; ++iy) {
+      for (int iz = 0; iz < 3; ++iz) {
+        const Eigen::Vector3d point(feet.x() + size.x() * 0.8 * (ix / 2.0 - 0.5),
+                                    feet.y() + size.y() * (0.1 + 0.8 * iy / 4.0),
+                                    feet.z() + size.z() * 0.8 * (iz / 2.0 - 0.5));
+        ++total;
+        if (!segment_blocked(boxes, eye, point)) ++visible;
+      }
+    }
+  }
+  return static_cast<double>(visible) / total;
+}
+
+}  // namespace sightline::experiments

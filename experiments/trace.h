@@ -1,0 +1,42 @@
+// Trace: one row per simulated frame of a camera run, and its CSV form (FORMATS.md).
+//
+// The first fifteen columns are the public format other tools read, in this order:
+//   frame,t,char_x,char_y,char_z,char_yaw,cam_x,cam_y,cam_z,target_x,target_y,target_z,cut,cost,solve_us
+// then the columns this project adds (the format allows more after those): the
+// controller's own visibility flag and the profile's desired values that frame, so metrics
+// can measure deviation from what the camera was asked to do, even inside areas.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace sightline::experiments {
+
+struct TraceRow {
+  int frame = 0;
+  double t = 0;                       // seconds
+  Eigen::Vector3d character{0, 0, 0};  // feet position
+  double character_yaw = 0;           // degrees
+  Eigen::Vector3d camera{0, 0, 0};
+  Eigen::Vector3d target{0, 0, 0};  // look-at point
+  bool cut = false;                 // the camera jumped into this frame
+  double cost = 0;                  // total weighted cost of the chosen position
+  double solve_us = 0;              // microseconds the controller spent on the frame
+  // Extras.
+  bool controller_visible = true;   // the controller's own flag (metrics never trust it)
+  double desired_height = 0;        // metres above the feet
+  double desired_distance = 0;      // metres, horizontal
+  double desired_orientation = 0;   // degrees
+};
+
+// The header line, without a trailing newline.
+std::string trace_header();
+// Writes the trace to `path` atomically enough for resumable suites: to path + ".tmp", then
+// renamed. Throws std::runtime_error naming the path on failure.
+void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows);
+// Reads a trace written by write_trace_csv (or any CSV with at least the fifteen public
+// columns, in order). Throws csp::InputError naming the file and line on malformed input.
+std::vector<TraceRow> read_trace_csv(const std::string& path);
+
+}  // namespace sightline::experiments
