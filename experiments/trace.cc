@@ -29,9 +29,10 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
     out << trace_header() << "\n";
     char line[512];
     for (const TraceRow& r : rows) {
-      // Fixed precision keeps traces byte-for-byte reproducible and diffable.
+      // Fixed precision keeps traces byte-for-byte reproducible and diffable; camera positions
+      // get micrometres so jerk (a third difference) is not swamped by rounding.
       std::snprintf(line, sizeof line,
-                    "%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.6g,%.1f,"
+                    "%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%d,%.6g,%.1f,"
                     "%d,%.3f,%.3f,%.3f\n",
                     r.frame, r.t, r.character.x(), r.character.y(), r.character.z(),
                     r.character_yaw, r.camera.x(), r.camera.y(), r.camera.z(), r.target.x(),

@@ -1,0 +1,61 @@
+#include "domains/camera/control/camera_problem_view.h"
+
+namespace sightline::camera {
+
+std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& problem,
+                                                         std::string* why) {
+  CameraProblemView view;
+  bool has_look_at = false, has_orientation = false, has_height = false;
+  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
+    const csp::Constraint& c = problem.constraint(id);
+    const std::string_view kind = c.kind();
+    if (kind == "camera.look_at_visible") {
+      const auto* look = dynamic_cast<const LookAtVisibleConstraint*>(&c);
+      if (!look) continue;
+      view.scene_ = &look->scene();
+      view.look_at_id_ = id;
+      has_look_at = true;
+      view.expensive_.insert(view.expensive_.begin(), id);  // one ray: first of the expensive
+    } else if (kind == "camera.visible_fraction" || kind == "camera.clearance") {
+      view.expensive_.push_back(id);
+    } else {
+      if (kind == "camera.orientation") {
+        view.orientation_ = dynamic_cast<const OrientationConstraint*>(&c);
+        view.orientation_id_ = id;
+        has_orientation = view.orientation_ != nullptr;
+      } else if (kind == "camera.height") {
+        view.height_ = dynamic_cast<const HeightConstraint*>(&c);
+        view.height_id_ = id;
+        has_height = view.height_ != nullptr;
+      }
+      view.cheap_.push_back(id);
+    }
+  }
+  const csp::Parameters& p = problem.parameters();
+  const auto look = p.find("look_x"), ch = p.find("char_x"), yaw = p.find("char_yaw");
+  if (!has_look_at || !has_orientation || !has_height || !look || !ch || !yaw ||
+      problem.num_variables() != 3) {
+    if (why) *why = "needs a camera problem (cam_x, cam_y, cam_z with the camera constraints)";
+    return std::nullopt;
+  }
+  view.look_x_ = *look;
+  view.char_x_ = *ch;
+  view.char_yaw_ = *yaw;
+  return view;
+}
+
+Eigen::Vector3d CameraProblemView::look_at(const csp::Problem& problem) const {
+  const csp::Parameters& p = problem.parameters();
+  return {p.get(look_x_), p.get(look_x_ + 1), p.get(look_x_ + 2)};
+}
+
+Eigen::Vector3d CameraProblemView::character(const csp::Problem& problem) const {
+  const csp::Parameters& p = problem.parameters();
+  return {p.get(char_x_), p.get(char_x_ + 1), p.get(char_x_ + 2)};
+}
+
+double CameraProblemView::character_yaw(const csp::Problem& problem) const {
+  return problem.parameters().get(char_yaw_);
+}
+
+}  // namespace sightline::camera

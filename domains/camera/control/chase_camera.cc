@@ -1,0 +1,218 @@
+#include "domains/camera/control/chase_camera.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "domains/camera/control/camera_solvers.h"
+
+namespace sightline::camera {
+
+const char* to_string(CutReason reason) {
+  switch (reason) {
+    case CutReason::kNone: return "none";
+    case CutReason::kLeftEnclosedArea: return "left an enclosed area";
+    case CutReason::kBackedUpToObstacle: return "backed up to an obstacle";
+    case CutReason::kVisibilityLost: return "no smooth move keeps the character visible";
+    case CutReason::kStuck: return "stuck behind an obstacle";
+  }
+  return "?";
+}
+
+std::string ChaseCameraOptions::validate() const {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (!positive(max_speed)) return "max_speed must be > 0 (m/s)";
+  if (!positive(max_acceleration)) return "max_acceleration must be > 0 (m/s^2)";
+  if (!positive(response_time)) return "response_time must be > 0 (s)";
+  if (!(target_smoothing >= 0) || !std::isfinite(target_smoothing)) {
+    return "target_smoothing must be >= 0 (s)";
+  }
+  if (!(min_shot_seconds >= 0) || !std::isfinite(min_shot_seconds)) {
+    return "min_shot_seconds must be >= 0 (s)";
+  }
+  if (!positive(stuck_seconds)) return "stuck_seconds must be > 0 (s)";
+  if (!(backing_speed >= 0) || !std::isfinite(backing_speed)) return "backing_speed must be >= 0";
+  return "";
+}
+
+ChaseCamera::ChaseCamera(const Scene& scene, const CameraProfile& profile,
+                         ChaseCameraOptions options)
+    : scene_(&scene), options_(std::move(options)), problem_(scene, profile) {
+  if (std::string why = options_.validate(); !why.empty()) {
+    throw std::invalid_argument("chase camera: " + why);
+  }
+  solver_ = solver_registry().create(options_.solver, options_.solver_options);
+  if (std::string why = solver_->unsuitable_reason(problem_.problem()); !why.empty()) {
+    throw std::invalid_argument("solver '" + options_.solver + "' cannot drive the camera: " + why);
+  }
+  context_.want_breakdown = false;
+  reset(scene.start_camera_position());
+}
+
+ChaseCamera::~ChaseCamera() = default;
+
+void ChaseCamera::reset(const Eigen::Vector3d& position) {
+  position_ = position;
+  velocity_.setZero();
+  filtered_target_ = position;
+  since_cut_ = 1e9;
+  stuck_for_ = 0;
+  frame_.position = position;
+}
+
+bool ChaseCamera::clear(const Eigen::Vector3d& p) const {
+  const double r = problem_.profile().clearance_radius;
+  return scene_->clearance(p, r + 1e-6) >= r;
+}
+
+bool ChaseCamera::sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const {
+  return scene_->line_of_sight(p, look);
+}
+
+Eigen::Vector3d ChaseCamera::solve_from_here() {
+  context_.seed = options_.seed + frames_;
+  const double start[3] = {position_.x(), position_.y(), position_.z()};
+  solver_->solve_into(problem_.problem(), start, context_, result_);
+  return {result_.best[0], result_.best[1], result_.best[2]};
+}
+
+Eigen::Vector3d ChaseCamera::solve_for_new_shot(const CharacterState& character, double dt,
+                                                const Eigen::Vector3d& look) {
+  // A new shot is searched around the profile's ideal position (or, when that is unusable,
+  // around the look-at point), as if the camera were already there: frame coherence must not
+  // pull a cut back toward the old shot.
+  Eigen::Vector3d centre = problem_.ideal_position();
+  if (!usable(centre, look)) centre = look;
+  problem_.set_frame(character, centre, dt);
+  const EffectiveProfile& e = problem_.effective();
+  problem_.set_search_box(centre, std::max(problem_.profile().search_half_size,
+                                           0.5 * std::hypot(e.desired_distance, e.desired_height)));
+  context_.seed = options_.seed + frames_;
+  const double start[3] = {centre.x(), centre.y(), centre.z()};
+  solver_->solve_into(problem_.problem(), start, context_, result_);
+  const Eigen::Vector3d found(result_.best[0], result_.best[1], result_.best[2]);
+  // Back to this frame's real parameters (last camera = where the camera is).
+  problem_.set_frame(character, position_, dt);
+  return found;
+}
+
+Eigen::Vector3d ChaseCamera::smooth_step(const Eigen::Vector3d& target, double dt,
+                                         Eigen::Vector3d* velocity) const {
+  // A critically damped spring (omega = 2 / response_time), with bounded acceleration and
+  // speed, integrated semi-implicitly:
+  //   a = omega^2 (target - p) - 2 omega v,  |a| <= max_acceleration
+  //   v' = v + a dt,  |v'| <= max_speed,      p' = p + v' dt
+  // Velocity stays continuous, so the camera eases in and out instead of jerking.
+  const double omega = 2.0 / options_.response_time;
+  Eigen::Vector3d a = omega * omega * (target - position_) - 2 * omega * velocity_;
+  if (a.norm() > options_.max_acceleration) a *= options_.max_acceleration / a.norm();
+  Eigen::Vector3d v = velocity_ + a * dt;
+  if (v.norm() > options_.max_speed) v *= options_.max_speed / v.norm();
+  *velocity = v;
+  return position_ + v * dt;
+}
+
+void ChaseCamera::cut_to(const Eigen::Vector3d& p, CutReason reason) {
+  position_ = p;
+  velocity_.setZero();
+  filtered_target_ = p;
+  since_cut_ = 0;
+  stuck_for_ = 0;
+  frame_.cut = true;
+  frame_.cut_reason = reason;
+}
+
+bool ChaseCamera::backed_up(const CharacterState& character, const Eigen::Vector3d& look) const {
+  // Backing up: moving against the facing. Into an obstruction: the spot right behind the
+  // character where the profile wants the camera cannot hold it (blocked or in a wall).
+  if (character.velocity.dot(character.facing()) > -options_.backing_speed) return false;
+  const Eigen::Vector3d ideal = problem_.ideal_position();
+  return !usable(ideal, look);
+}
+
+const CameraFrame& ChaseCamera::update(const CharacterState& character, double dt) {
+  const auto started = std::chrono::steady_clock::now();
+  if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
+  frame_.cut = false;
+  frame_.cut_reason = CutReason::kNone;
+  since_cut_ += dt;
+
+  const AreaTransition transition = problem_.set_frame(character, position_, dt);
+  const Eigen::Vector3d look = scene_->character().look_at(character.position);
+
+  // Discretionary cuts (thesis table 9): leaving an enclosed area for the outside, and
+  // backing up into an obstruction (once per episode).
+  bool left_enclosed = false;
+  if (transition.left && scene_->areas()[*transition.left].kind == AreaKind::kEnclosed) {
+    const auto& now = problem_.effective().area;
+    left_enclosed = !now || scene_->areas()[*now].kind != AreaKind::kEnclosed;
+  }
+  const bool backing = backed_up(character, look);
+  const bool backing_started = backing && !was_backed_up_;
+  was_backed_up_ = backing;
+  const bool may_cut = since_cut_ >= options_.min_shot_seconds && frames_ > 0;
+
+  Eigen::Vector3d target;
+  if (may_cut && (left_enclosed || backing_started)) {
+    target = solve_for_new_shot(character, dt, look);
+    cut_to(target, left_enclosed ? CutReason::kLeftEnclosedArea : CutReason::kBackedUpToObstacle);
+  } else {
+    target = solve_from_here();
+    const bool guard = options_.visibility_guard;
+    if (guard && !usable(target, look)) {
+      // The solver found nothing usable near the camera: ask it once more around the ideal
+      // position. (Bourne's octree ignores visibility and may still fail; that is the point.)
+      const Eigen::Vector3d other = solve_for_new_shot(character, dt, look);
+      if (usable(other, look)) target = other;
+    }
+    // The solver's target moves a little every frame; the spring follows a low-passed copy.
+    const double keep = options_.target_smoothing > 0
+                            ? std::exp(-dt / options_.target_smoothing) : 0.0;
+    filtered_target_ = keep * filtered_target_ + (1 - keep) * target;
+    // Smooth motion if the step keeps the character visible and crosses no geometry; a
+    // shorter step if only that does; otherwise stay, or cut if staying loses sight too.
+    bool moved = false;
+    Eigen::Vector3d velocity;
+    const Eigen::Vector3d step = smooth_step(filtered_target_, dt, &velocity);
+    for (double fraction : {1.0, 0.5, 0.25}) {
+      const Eigen::Vector3d next = position_ + fraction * (step - position_);
+      if (!guard || (usable(next, look) && sees(position_, next))) {
+        velocity_ = fraction * velocity;
+        position_ = next;
+        moved = true;
+        break;
+      }
+    }
+    if (moved) {
+      stuck_for_ = 0;
+    } else if (usable(position_, look)) {
+      velocity_.setZero();
+      filtered_target_ = position_;
+      stuck_for_ += dt;
+      if (stuck_for_ >= options_.stuck_seconds && may_cut && usable(target, look) &&
+          (target - position_).norm() > max_step(dt)) {
+        cut_to(target, CutReason::kStuck);
+      }
+    } else {
+      cut_to(target, CutReason::kVisibilityLost);  // forced, whatever the shot's age
+    }
+  }
+  // A move longer than smooth motion allows is a cut, and flagged as one.
+  if (!frame_.cut && (position_ - frame_.position).norm() > max_step(dt) * (1 + 1e-9)) {
+    cut_to(position_, CutReason::kVisibilityLost);
+  }
+  ++frames_;
+  frame_.position = position_;
+  frame_.target = look;
+  frame_.solver_target = target;
+  const double values[3] = {position_.x(), position_.y(), position_.z()};
+  frame_.score = problem_.problem().score(values);
+  frame_.look_at_visible = sees(position_, look);
+  frame_.effective = problem_.effective();
+  frame_.solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return frame_;
+}
+
+}  // namespace sightline::camera

@@ -1,0 +1,123 @@
+#include "domains/camera/control/occlusion_octree.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "domains/camera/control/octree_search.h"
+
+namespace sightline::camera {
+
+const solvers::OptionSchema<OcclusionOctreeSolver::Options>&
+OcclusionOctreeSolver::Options::schema() {
+  static const auto* schema = [] {
+    auto* s = new solvers::OptionSchema<Options>;
+    s->integer("passes", &Options::passes, "octree passes per orientation", 1, 64)
+        .real("initial_size", &Options::initial_size,
+              "half-size of the first cube in metres (0 = the problem's search box)", 0, 1e6)
+        .real("scale", &Options::scale, "cube shrink factor per pass, in (0, 1)", 0.01, 0.99)
+        .real("sweep_step", &Options::sweep_step, "orientation sweep step, degrees", 1, 180)
+        .real("probe_distance", &Options::probe_distance,
+              "front/back probe distance, metres (0 = no probes)", 0, 100)
+        .boolean("include_start", &Options::include_start,
+                 "also score the current camera position");
+    return s;
+  }();
+  return *schema;
+}
+
+std::string OcclusionOctreeSolver::Options::validate() const { return ""; }
+
+std::string OcclusionOctreeSolver::unsuitable_reason(const csp::Problem& problem) const {
+  std::string why;
+  return CameraProblemView::find(problem, &why) ? "" : why;
+}
+
+const CameraProblemView& OcclusionOctreeSolver::view_for(const csp::Problem& problem) {
+  // The view is found once per problem: a camera problem is re-parameterised, not rebuilt.
+  if (viewed_ != &problem || !view_) {
+    std::string why;
+    view_ = CameraProblemView::find(problem, &why);
+    if (!view_) throw std::invalid_argument(name_ + ": " + why);
+    viewed_ = &problem;
+  }
+  return *view_;
+}
+
+void OcclusionOctreeSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
+                                       const solvers::SolveContext& context,
+                                       solvers::SolverResult& result) {
+  solvers::Budget budget(context.limits, 1);
+  const CameraProblemView& view = view_for(problem);
+  OctreeSearch search(problem, view);
+  const Eigen::Vector3d p0(start[0], start[1], start[2]);
+  OctreeSettings settings;
+  settings.passes = static_cast<int>(options_.passes);
+  settings.initial_half_size = options_.initial_size;
+  settings.scale = options_.scale;
+  settings.require_visible = true;
+
+  const double base = view.orientation().term().desired_degrees;
+  Candidate best;
+  best.cost = std::numeric_limits<double>::infinity();
+  std::uint64_t passes_run = 0;
+  double used_orientation = base;
+  result.stop = solvers::StopReason::kCompleted;
+  // Orientation values in sweep order: base, base + s, base - s, base + 2s, ... within
+  // [0, 180].
+  for (int k = 0;; ++k) {
+    const int step = (k + 1) / 2;
+    const double sign = (k % 2 == 1) ? 1.0 : -1.0;
+    const double desired = base + sign * step * options_.sweep_step;
+    if (step * options_.sweep_step > 180 + 1e-9) break;
+    if (k > 0 && (desired < -1e-9 || desired > 180 + 1e-9)) continue;
+    search.set_orientation_override(k == 0 ? std::nullopt : std::optional<double>(desired));
+    if (k == 0 && options_.include_start) {
+      const Candidate here = search.evaluate(search.clamp(p0), true, best.cost);
+      if (here.valid) best = here;
+    }
+    const Candidate found = search.run(p0, settings);
+    passes_run += static_cast<std::uint64_t>(settings.passes);
+    if (found.valid && found.cost < best.cost) best = found;
+    if (best.valid) {
+      used_orientation = k == 0 ? base : desired;
+      break;
+    }
+    if (budget.exhausted(search.evaluations(), passes_run)) {
+      result.stop = budget.reason();
+      break;
+    }
+  }
+  if (best.valid && options_.probe_distance > 0) {
+    // Table 9: "if front or back points at unit distance away from the calculated best
+    // solution has less cost then choose it". Front = toward the character.
+    const Eigen::Vector3d character = view.character(problem);
+    Eigen::Vector3d toward(character.x() - best.position.x(), 0,
+                           character.z() - best.position.z());
+    if (toward.norm() > 1e-9) {
+      toward.normalize();
+      for (double s : {1.0, -1.0}) {
+        const Candidate probe = search.evaluate(
+            search.clamp(best.position + s * options_.probe_distance * toward), true, best.cost);
+        if (probe.valid && probe.cost < best.cost) best = probe;
+      }
+    }
+  }
+  result.best.assign({p0.x(), p0.y(), p0.z()});
+  result.message.clear();
+  if (best.valid) {
+    result.best.assign({best.position.x(), best.position.y(), best.position.z()});
+    if (used_orientation != base) {
+      result.message = "orientation swept to " + std::to_string(static_cast<int>(used_orientation)) +
+                       " deg";
+    }
+  } else {
+    result.message = "no visible candidate in the search box";
+  }
+  result.evaluations = search.evaluations();
+  result.iterations = passes_run;
+  result.solutions_at_best = 0;
+  solvers::finish_result(problem, context, budget, result);
+}
+
+}  // namespace sightline::camera

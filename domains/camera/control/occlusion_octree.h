@@ -1,0 +1,55 @@
+// OcclusionOctreeSolver ("occlusion-octree"): Ali's occlusion-aware sliding octree (thesis
+// table 9, section 3.3), the solver that keeps the character in view.
+//
+//   1. Sliding-octree passes from the current camera position in which a candidate counts
+//      only if the look-at point is visible from it (one ray, character -> candidate) and it
+//      breaks no hard constraint (clearance).
+//   2. If no candidate is visible, the desired orientation is changed in steps of
+//      `sweep_step` degrees, alternately above and below the profile's value (the angle is
+//      unsigned, 0..180, so both sides of the character are covered), and the search is
+//      repeated, until a visible candidate is found.
+//   3. The points `probe_distance` in front of and behind the best (along the horizontal
+//      camera -> character direction) are tried, and kept if cheaper and visible.
+// The smooth move toward the result, the cuts and the area adaptation are the controller's
+// job (ChaseCamera), as they are for every solver. Only works on camera problems.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "domains/camera/control/camera_problem_view.h"
+#include "solvers/options.h"
+#include "solvers/solver.h"
+
+namespace sightline::camera {
+
+class OcclusionOctreeSolver : public solvers::Solver {
+ public:
+  struct Options {
+    std::int64_t passes = 8;
+    double initial_size = 0;   // half-size of the first cube, metres; 0 = the search box
+    double scale = 0.6;        // cube shrink per pass, (0, 1)
+    double sweep_step = 10;    // degrees
+    double probe_distance = 1; // metres
+    bool include_start = true; // also score the current position (keeps a good shot still)
+    static const solvers::OptionSchema<Options>& schema();
+    std::string validate() const;
+  };
+
+  OcclusionOctreeSolver(std::string name, Options options)
+      : name_(std::move(name)), options_(options) {}
+  std::string name() const override { return name_; }
+  std::string unsuitable_reason(const csp::Problem& problem) const override;
+  void solve_into(const csp::Problem& problem, std::span<const double> start,
+                  const solvers::SolveContext& context, solvers::SolverResult& result) override;
+
+ private:
+  const CameraProblemView& view_for(const csp::Problem& problem);
+
+  std::string name_;
+  Options options_;
+  const csp::Problem* viewed_ = nullptr;
+  std::optional<CameraProblemView> view_;
+};
+
+}  // namespace sightline::camera

@@ -1,0 +1,67 @@
+// OctreeSearch: the sliding-octree passes shared by the camera's two octree solvers.
+//
+// Bourne's Sliding Octree Solver (thesis table 8): split the current cube into its 8
+// octants, score each octant's centre, keep the best candidate seen, shrink the cube by the
+// scale factor and slide its centre onto the best candidate, for a fixed number of passes.
+// What differs between Bourne's and Ali's versions is which candidates count and how they
+// are scored, so this class takes both as settings:
+//   - desired orientation and height overrides (Ali sweeps the orientation; Bourne raises
+//     the height when his top ray is blocked),
+//   - `require_visible`: a candidate counts only if the look-at point is visible from it and
+//     it holds every hard constraint (Ali: "evaluate octree node ... if character is visible
+//     from the node"); otherwise hard constraints are ignored (Bourne: occlusion is only
+//     handled nominally).
+// Scoring evaluates the cheap constraints first and stops as soon as a candidate cannot beat
+// the best one, so the sight-line queries run only for candidates that matter.
+// No allocation per candidate.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "csp/problem.h"
+#include "domains/camera/control/camera_problem_view.h"
+
+namespace sightline::camera {
+
+struct OctreeSettings {
+  int passes = 8;
+  double initial_half_size = 0;  // metres; 0 = half the smallest domain width
+  double scale = 0.6;            // the cube's size is multiplied by this after each pass
+  bool require_visible = true;
+};
+
+struct Candidate {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double cost = 0;  // soft cost under the search's overrides
+  bool valid = false;
+};
+
+class OctreeSearch {
+ public:
+  OctreeSearch(const csp::Problem& problem, const CameraProblemView& view);
+
+  // Per-search overrides of desired values (nullopt = the problem's own).
+  void set_orientation_override(std::optional<double> degrees) { orientation_override_ = degrees; }
+  void set_height_override(std::optional<double> metres) { height_override_ = metres; }
+
+  // Scores one position. With require_visible, invalid candidates (hidden look-at or a
+  // broken hard constraint) come back with valid = false. `bound`: stop early once the soft
+  // cost reaches it (the result is then only a lower bound, marked invalid).
+  Candidate evaluate(const Eigen::Vector3d& p, bool require_visible, double bound);
+  // Runs the passes from `centre`; returns the best valid candidate (valid = false if none).
+  Candidate run(const Eigen::Vector3d& centre, const OctreeSettings& settings);
+  // Clamps a point into the variables' domains.
+  Eigen::Vector3d clamp(const Eigen::Vector3d& p) const;
+
+  std::uint64_t evaluations() const { return evaluations_; }
+
+ private:
+  const csp::Problem* problem_;
+  const CameraProblemView* view_;
+  std::optional<double> orientation_override_, height_override_;
+  double values_[3] = {0, 0, 0};
+  std::uint64_t evaluations_ = 0;
+};
+
+}  // namespace sightline::camera

@@ -1,0 +1,75 @@
+#include "experiments/camera_run.h"
+
+#include <sstream>
+
+namespace sightline::experiments {
+
+MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
+                           const camera::ChaseCameraOptions& options) {
+  MetricsInput input;
+  input.boxes.reserve(scene.solids().size());
+  for (const auto& solid : scene.solids()) input.boxes.push_back({solid.box.min, solid.box.max});
+  input.character_size = scene.character().size;
+  input.clearance_radius = profile.clearance_radius;
+  // Positions are written with 4 decimals: allow for that rounding.
+  input.max_smooth_step = options.max_speed / scene.frame_rate() + 2e-4;
+  return input;
+}
+
+CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
+                     const camera::ChaseCameraOptions& options) {
+  CameraRun run;
+  run.solver = options.solver;
+  run.profile = profile.name;
+  camera::ChaseCamera chase(scene, profile, options);
+  const std::size_t frames = scene.frame_count();
+  run.trace.reserve(frames);
+  double previous_t = scene.frame_time(0) - 1.0 / scene.frame_rate();
+  for (std::size_t i = 0; i < frames; ++i) {
+    const double t = scene.frame_time(i);
+    const camera::CharacterState character = scene.character_at(t);
+    const double dt = t - previous_t > 0 ? t - previous_t : 1.0 / scene.frame_rate();
+    previous_t = t;
+    const camera::CameraFrame& f = chase.update(character, dt);
+    TraceRow row;
+    row.frame = static_cast<int>(i);
+    row.t = t;
+    row.character = character.position;
+    row.character_yaw = character.yaw;
+    row.camera = f.position;
+    row.target = f.target;
+    row.cut = f.cut;
+    row.cost = f.score.soft;
+    row.solve_us = f.solve_seconds * 1e6;
+    row.controller_visible = f.look_at_visible;
+    row.desired_height = f.effective.desired_height;
+    row.desired_distance = f.effective.desired_distance;
+    row.desired_orientation = f.effective.desired_orientation;
+    run.trace.push_back(row);
+  }
+  run.metrics = compute_metrics(run.trace, metrics_input(scene, profile, options));
+  return run;
+}
+
+std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) {
+  const RunMetrics& m = run.metrics;
+  const int visible = static_cast<int>(m.visible_percent * m.frames / 100.0 + 0.5);
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(1);
+  out << "Scene '" << scene.name() << "' with solver '" << run.solver << "' and profile '"
+      << run.profile << "': " << m.frames << " frames; the look-at point was visible in "
+      << visible << " of them (" << m.visible_percent << "%, independent check), the mean "
+      << "visible fraction of the body " << m.visible_fraction_mean * 100 << "%; " << m.cuts
+      << " cut" << (m.cuts == 1 ? "" : "s") << " and " << m.unflagged_jumps
+      << " unflagged jumps; " << m.clearance_violations
+      << " frames inside the clearance radius; cost mean " << m.cost_mean << ", max "
+      << m.cost_max << "; solve time median " << m.solve_us_p50 << " us, p99 "
+      << m.solve_us_p99 << " us; mean deviation from the profile: height "
+      << m.height_deviation_mean << " m, distance " << m.distance_deviation_mean
+      << " m, orientation " << m.orientation_deviation_mean << " deg; camera speed p99 "
+      << m.speed_p99 << " m/s, jerk p99 " << m.jerk_p99 << " m/s^3.";
+  return out.str();
+}
+
+}  // namespace sightline::experiments

@@ -1,0 +1,39 @@
+// CameraRun: one scene followed by one chase camera, frame by frame, as a trace plus metrics.
+//
+// The simulation of FORMATS.md: frames every 1 / frame_rate seconds from the first to the
+// last keyframe, both ends included; each frame the character's state comes from the
+// trajectory and the controller updates once. The trace is what `sightline follow` writes;
+// the metrics judge visibility and clearance with the independent brute-force checks.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "domains/camera/control/chase_camera.h"
+#include "domains/camera/scene.h"
+#include "experiments/metrics.h"
+#include "experiments/trace.h"
+
+namespace sightline::experiments {
+
+struct CameraRun {
+  std::vector<TraceRow> trace;
+  RunMetrics metrics;
+  std::string solver;
+  std::string profile;
+};
+
+// Runs `scene` with `profile` and the controller `options`. Throws what ChaseCamera throws
+// for bad options.
+CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
+                     const camera::ChaseCameraOptions& options);
+
+// The metrics' view of a scene: its boxes, the character's size, the camera's radius and
+// the smooth-motion bound of a controller at the scene's frame rate.
+MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
+                           const camera::ChaseCameraOptions& options);
+
+// The one-paragraph summary of a run that `sightline follow` prints.
+std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run);
+
+}  // namespace sightline::experiments
