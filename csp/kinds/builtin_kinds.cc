@@ -1,8 +1,21 @@
 // Registration of the built-in constraint kinds: one line per kind.
 #include "csp/constraint_kinds.h"
+#include "csp/kinds/abs_deviation.h"
+#include "csp/kinds/all_different.h"
+#include "csp/kinds/expression.h"
+#include "csp/kinds/linear.h"
+#include "csp/kinds/not_equal.h"
+#include "csp/kinds/table.h"
 
 namespace sightline::csp {
 
-void register_builtin_kinds(ConstraintKinds& kinds) { (void)kinds; }
+void register_builtin_kinds(ConstraintKinds& kinds) {
+  kinds.add(not_equal_kind());
+  kinds.add(all_different_kind());
+  kinds.add(linear_kind());
+  kinds.add(abs_deviation_kind());
+  kinds.add(expression_kind());
+  kinds.add(table_kind());
+}
 
 }  // namespace sightline::csp

@@ -1,0 +1,152 @@
+#include "csp/problem.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+
+#include "csp/kinds/abs_deviation.h"
+#include "csp/kinds/linear.h"
+#include "csp/kinds/not_equal.h"
+#include "incremental_check.h"
+
+namespace sightline::csp {
+namespace {
+
+// x, y, z in 0..3; hard x != y; soft (weight 2) x + y + z <= 4; soft (weight 0.5) |z - 3|.
+std::unique_ptr<Problem> small_problem() {
+  auto p = std::make_unique<Problem>("small");
+  const VariableId x = p->add_variable("x", Domain::integer_range(0, 3));
+  const VariableId y = p->add_variable("y", Domain::integer_range(0, 3));
+  const VariableId z = p->add_variable("z", Domain::integer_range(0, 3));
+  p->add_constraint(std::make_unique<NotEqual>(x, y, 0, 1, true));
+  p->add_constraint(std::make_unique<LinearConstraint>(std::vector<VariableId>{x, y, z},
+                                                       std::vector<double>{1, 1, 1},
+                                                       Relation::kLessEqual, 4, 2.0));
+  p->add_constraint(std::make_unique<AbsDeviation>(std::vector<VariableId>{z},
+                                                   std::vector<double>{1}, 0, 3, 0.5));
+  return p;
+}
+
+TEST(Problem, ScoreSeparatesHardViolationFromSoftCost) {
+  const auto p = small_problem();
+  // x = y = 2, z = 1: x != y broken (hard 1); sum 5 > 4 by 1 (soft 2); |1 - 3| = 2 (soft 1).
+  const Assignment a = {2, 2, 1};
+  const Score s = p->score(a);
+  EXPECT_DOUBLE_EQ(s.hard, 1.0);
+  EXPECT_DOUBLE_EQ(s.soft, 3.0);
+  EXPECT_FALSE(p->is_feasible(a));
+  EXPECT_DOUBLE_EQ(p->cost(a), 3.0);
+  const Assignment good = {0, 1, 3};
+  EXPECT_TRUE(p->is_feasible(good));
+  EXPECT_DOUBLE_EQ(p->cost(good), 0.0);
+}
+
+TEST(Problem, BreakdownListsEveryConstraintInIdOrder) {
+  const auto p = small_problem();
+  const auto parts = p->breakdown(Assignment{2, 2, 1});
+  ASSERT_EQ(parts.size(), 3u);
+  EXPECT_EQ(parts[0].id, 0u);
+  EXPECT_TRUE(parts[0].hard);
+  EXPECT_DOUBLE_EQ(parts[0].violation, 1);
+  EXPECT_DOUBLE_EQ(parts[1].violation, 1);
+  EXPECT_DOUBLE_EQ(parts[1].cost, 2);
+  EXPECT_FALSE(parts[1].hard);
+  EXPECT_DOUBLE_EQ(parts[2].violation, 2);
+  EXPECT_DOUBLE_EQ(parts[2].cost, 1);
+  // The breakdown adds up to the score.
+  EXPECT_DOUBLE_EQ(parts[1].cost + parts[2].cost, p->cost(Assignment{2, 2, 1}));
+}
+
+TEST(Problem, DeltaEqualsFullReEvaluationForEveryMove) {
+  const auto p = small_problem();
+  for (double x = 0; x <= 3; ++x) {
+    for (double y = 0; y <= 3; ++y) {
+      for (double z = 0; z <= 3; ++z) {
+        Assignment a = {x, y, z};
+        for (VariableId v = 0; v < 3; ++v) {
+          for (double value = 0; value <= 3; ++value) {
+            Assignment b = a;
+            b[v] = value;
+            const Score expected = p->score(b) - p->score(a);
+            const Score got = p->delta(a, v, value);
+            EXPECT_DOUBLE_EQ(got.hard, expected.hard);
+            EXPECT_DOUBLE_EQ(got.soft, expected.soft);
+            EXPECT_EQ(a, (Assignment{x, y, z})) << "delta must restore the assignment";
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(Problem, IncidencesListEachConstraintAndPosition) {
+  const auto p = small_problem();
+  const auto z = p->incidences(2);
+  ASSERT_EQ(z.size(), 2u);
+  EXPECT_EQ(z[0].constraint, 1u);
+  EXPECT_EQ(z[0].position, 2u);
+  EXPECT_EQ(z[1].constraint, 2u);
+  EXPECT_EQ(z[1].position, 0u);
+  const auto y = p->incidences(1);
+  ASSERT_EQ(y.size(), 2u);
+  EXPECT_EQ(y[0].constraint, 0u);
+  EXPECT_EQ(y[0].position, 1u);
+  EXPECT_EQ(y[1].position, 1u);
+  for (VariableId v = 0; v < p->num_variables(); ++v) {
+    for (const Incidence& inc : p->incidences(v)) {
+      EXPECT_EQ(p->constraint(inc.constraint).scope()[inc.position], v);
+    }
+  }
+}
+
+TEST(Problem, RefusesDuplicateUnknownAndRepeatedVariables) {
+  Problem p;
+  p.add_variable("x", Domain::integer_range(0, 1));
+  EXPECT_THROW(p.add_variable("x", Domain::integer_range(0, 1)), std::invalid_argument);
+  EXPECT_THROW(p.add_variable("", Domain::integer_range(0, 1)), std::invalid_argument);
+  EXPECT_THROW(p.add_constraint(std::make_unique<NotEqual>(0, 5)), std::invalid_argument);
+  EXPECT_THROW(p.add_constraint(std::make_unique<NotEqual>(0, 0)), std::invalid_argument);
+  EXPECT_EQ(p.num_constraints(), 0u);
+  EXPECT_TRUE(p.find_variable("x").has_value());
+  EXPECT_FALSE(p.find_variable("y").has_value());
+}
+
+TEST(Problem, CheckAssignmentNamesTheOffendingVariable) {
+  const auto p = small_problem();
+  EXPECT_NO_THROW(p->check_assignment(Assignment{0, 1, 2}));
+  try {
+    p->check_assignment(Assignment{0, 7, 2});
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'y'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(p->check_assignment(Assignment{0, 1}), std::invalid_argument);
+  EXPECT_THROW(p->check_assignment(Assignment{0, 1, std::nan("")}), std::invalid_argument);
+}
+
+TEST(Problem, DefaultAssignmentTakesEachDomainsMiddle) {
+  const auto p = small_problem();
+  EXPECT_EQ(p->default_assignment(), (Assignment{2, 2, 2}));
+  EXPECT_TRUE(p->all_discrete());
+  EXPECT_FALSE(p->all_continuous());
+}
+
+TEST(IncrementalEvaluator, RunningScoreMatchesProblemScoreOnTheSmallProblem) {
+  const auto p = small_problem();
+  testing::check_incremental_matches_full(*p, 7, 300);
+}
+
+TEST(IncrementalEvaluator, InvolvementIsTheWeightedViolationOfTheVariablesConstraints) {
+  const auto p = small_problem();
+  IncrementalEvaluator e(*p, Assignment{2, 2, 1});
+  // x takes part in x != y (1 x 1) and the sum (2 x 1); z in the sum (2) and |z - 3| (0.5 x 2).
+  EXPECT_DOUBLE_EQ(e.involvement(0), 3.0);
+  EXPECT_DOUBLE_EQ(e.involvement(2), 3.0);
+  e.assign(1, 0);  // x != y holds, sum 3 <= 4 holds
+  EXPECT_DOUBLE_EQ(e.involvement(0), 0.0);
+  EXPECT_DOUBLE_EQ(e.involvement(2), 1.0);
+}
+
+}  // namespace
+}  // namespace sightline::csp
