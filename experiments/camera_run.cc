@@ -5,14 +5,14 @@
 namespace sightline::experiments {
 
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
-                           const camera::ChaseCameraOptions& options) {
+                           double max_step) {
   MetricsInput input;
   input.boxes.reserve(scene.solids().size());
   for (const auto& solid : scene.solids()) input.boxes.push_back({solid.box.min, solid.box.max});
   input.character_size = scene.character().size;
   input.clearance_radius = profile.clearance_radius;
-  // Positions are written with 4 decimals: allow for that rounding.
-  input.max_smooth_step = options.max_speed / scene.frame_rate() + 2e-4;
+  // Camera positions are written with 6 decimals: allow for that rounding.
+  input.max_smooth_step = max_step + 2e-6;
   return input;
 }
 
@@ -21,7 +21,8 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
   CameraRun run;
   run.solver = options.solver;
   run.profile = profile.name;
-  camera::ChaseCamera chase(scene, profile, options);
+  const std::unique_ptr<camera::CameraController> controller =
+      camera::make_controller(options.solver, scene, profile, options);
   const std::size_t frames = scene.frame_count();
   run.trace.reserve(frames);
   double previous_t = scene.frame_time(0) - 1.0 / scene.frame_rate();
@@ -30,7 +31,7 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
     const camera::CharacterState character = scene.character_at(t);
     const double dt = t - previous_t > 0 ? t - previous_t : 1.0 / scene.frame_rate();
     previous_t = t;
-    const camera::CameraFrame& f = chase.update(character, dt);
+    const camera::CameraFrame& f = controller->update(character, dt);
     TraceRow row;
     row.frame = static_cast<int>(i);
     row.t = t;
@@ -47,7 +48,8 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
     row.desired_orientation = f.effective.desired_orientation;
     run.trace.push_back(row);
   }
-  run.metrics = compute_metrics(run.trace, metrics_input(scene, profile, options));
+  run.metrics = compute_metrics(
+      run.trace, metrics_input(scene, profile, controller->max_step(1.0 / scene.frame_rate())));
   return run;
 }
 

@@ -6,10 +6,12 @@
 // the metrics judge visibility and clearance with the independent brute-force checks.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "domains/camera/control/chase_camera.h"
+#include "domains/camera/control/camera_controller.h"
 #include "domains/camera/scene.h"
 #include "experiments/metrics.h"
 #include "experiments/trace.h"
@@ -23,15 +25,16 @@ struct CameraRun {
   std::string profile;
 };
 
-// Runs `scene` with `profile` and the controller `options`. Throws what ChaseCamera throws
-// for bad options.
+// Runs `scene` with `profile` and the controller named by `options.solver` (a solver or
+// pipeline driving a ChaseCamera, or a baseline such as "spring-arm"). Throws what
+// make_controller throws for bad names or options.
 CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
                      const camera::ChaseCameraOptions& options);
 
 // The metrics' view of a scene: its boxes, the character's size, the camera's radius and
-// the smooth-motion bound of a controller at the scene's frame rate.
+// the controller's smooth-motion bound for one frame (CameraController::max_step).
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
-                           const camera::ChaseCameraOptions& options);
+                           double max_step);
 
 // The one-paragraph summary of a run that `sightline follow` prints.
 std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run);

@@ -9,17 +9,6 @@
 
 namespace sightline::camera {
 
-const char* to_string(CutReason reason) {
-  switch (reason) {
-    case CutReason::kNone: return "none";
-    case CutReason::kLeftEnclosedArea: return "left an enclosed area";
-    case CutReason::kBackedUpToObstacle: return "backed up to an obstacle";
-    case CutReason::kVisibilityLost: return "no smooth move keeps the character visible";
-    case CutReason::kStuck: return "stuck behind an obstacle";
-  }
-  return "?";
-}
-
 std::string ChaseCameraOptions::validate() const {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(max_speed)) return "max_speed must be > 0 (m/s)";

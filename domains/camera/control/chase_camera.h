@@ -24,6 +24,7 @@
 #include <string>
 
 #include "domains/camera/camera_problem.h"
+#include "domains/camera/control/camera_controller.h"
 #include "domains/camera/scene.h"
 #include "solvers/registry.h"
 
@@ -48,40 +49,25 @@ struct ChaseCameraOptions {
   std::string validate() const;
 };
 
-enum class CutReason { kNone, kLeftEnclosedArea, kBackedUpToObstacle, kVisibilityLost, kStuck };
-const char* to_string(CutReason reason);
-
-struct CameraFrame {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // where the camera is this frame
-  Eigen::Vector3d target = Eigen::Vector3d::Zero();    // the look-at point it aims at
-  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
-  Eigen::Vector3d solver_target = Eigen::Vector3d::Zero();  // where the solver wanted it
-  bool cut = false;
-  CutReason cut_reason = CutReason::kNone;
-  csp::Score score;             // of `position`, under this frame's parameters
-  bool look_at_visible = true;  // the controller's own sight-line query
-  double solve_seconds = 0;     // the whole update, solver included
-  EffectiveProfile effective;   // desired values in force
-};
-
-class ChaseCamera {
+class ChaseCamera : public CameraController {
  public:
   // `scene` and `profile` must outlive the camera. Throws solvers::OptionError for an
   // unknown solver or bad options, std::invalid_argument for bad controller options or a
   // solver that cannot work on camera problems.
   ChaseCamera(const Scene& scene, const CameraProfile& profile, ChaseCameraOptions options);
-  ~ChaseCamera();
+  ~ChaseCamera() override;
+  std::string name() const override { return options_.solver; }
 
   // One frame; dt > 0 seconds since the previous one.
-  const CameraFrame& update(const CharacterState& character, double dt);
+  const CameraFrame& update(const CharacterState& character, double dt) override;
   // Puts the camera at `position` (at rest) for the next update.
-  void reset(const Eigen::Vector3d& position);
+  void reset(const Eigen::Vector3d& position) override;
 
   const CameraFrame& frame() const { return frame_; }
   const CameraProblem& camera_problem() const { return problem_; }
   const ChaseCameraOptions& options() const { return options_; }
   // The largest move a smooth frame of length dt may make.
-  double max_step(double dt) const { return options_.max_speed * dt; }
+  double max_step(double dt) const override { return options_.max_speed * dt; }
 
  private:
   bool clear(const Eigen::Vector3d& p) const;

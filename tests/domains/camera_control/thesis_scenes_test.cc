@@ -40,7 +40,7 @@ TEST_P(OcclusionOctreeOnThesisScene, KeepsTheCharacterVisibleAndTheCameraClearIn
   options.solver = "occlusion-octree";
   const experiments::CameraRun run = experiments::run_camera(scene, scene.profile(), options);
   const experiments::MetricsInput input =
-      experiments::metrics_input(scene, scene.profile(), options);
+      experiments::metrics_input(scene, scene.profile(), options.max_speed / scene.frame_rate());
   ASSERT_EQ(run.trace.size(), scene.frame_count());
   int hidden = 0, too_close = 0, unflagged = 0;
   for (std::size_t i = 0; i < run.trace.size(); ++i) {

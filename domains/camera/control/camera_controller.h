@@ -1,0 +1,58 @@
+// CameraController: what anything that moves a game camera each frame offers, so the
+// constraint camera and the baselines games ship (spring arm, pull-forward) run through the
+// same experiments, traces and metrics.
+//
+// make_controller() creates one by name: "spring-arm" and "pull-forward" are the baselines
+// (domains/camera/baselines/); any other name is a solver or pipeline driving a ChaseCamera.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "csp/score.h"
+#include "domains/camera/area_profile_switch.h"
+#include "domains/camera/profile.h"
+#include "domains/camera/scene.h"
+#include "domains/camera/trajectory.h"
+
+namespace sightline::camera {
+
+enum class CutReason { kNone, kLeftEnclosedArea, kBackedUpToObstacle, kVisibilityLost, kStuck };
+const char* to_string(CutReason reason);
+
+struct CameraFrame {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // where the camera is this frame
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();    // the look-at point it aims at
+  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  Eigen::Vector3d solver_target = Eigen::Vector3d::Zero();  // where the method wanted it
+  bool cut = false;
+  CutReason cut_reason = CutReason::kNone;
+  csp::Score score;             // of `position`, under this frame's camera problem
+  bool look_at_visible = true;  // the controller's own sight-line query
+  double solve_seconds = 0;     // the whole update
+  EffectiveProfile effective;   // desired values in force
+};
+
+class CameraController {
+ public:
+  virtual ~CameraController() = default;
+  virtual std::string name() const = 0;
+  // One frame; dt > 0 seconds since the previous one.
+  virtual const CameraFrame& update(const CharacterState& character, double dt) = 0;
+  // Puts the camera at `position`, at rest.
+  virtual void reset(const Eigen::Vector3d& position) = 0;
+  // The largest move a frame of length dt makes without being a cut.
+  virtual double max_step(double dt) const = 0;
+};
+
+struct ChaseCameraOptions;
+
+// "spring-arm", "pull-forward", or a solver/pipeline name for a ChaseCamera (`options.solver`
+// is replaced by `name`). Throws solvers::OptionError / std::invalid_argument for bad names
+// or options.
+std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
+                                                  const CameraProfile& profile,
+                                                  const ChaseCameraOptions& options);
+
+}  // namespace sightline::camera
