@@ -1,0 +1,70 @@
+// `sightline follow SCENE.yaml --solver NAME [--profile NAME|FILE] [--seed S] [--trace OUT.csv]`
+// (FORMATS.md): runs one scene with one solver through the chase camera, prints a
+// one-paragraph summary and writes the trace.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/commands.h"
+#include "csp/input_error.h"
+#include "domains/camera/profile_file.h"
+#include "domains/camera/scene_file.h"
+#include "experiments/camera_run.h"
+#include "solvers/registry.h"
+
+namespace sightline::apps {
+namespace {
+
+struct FollowOptions {
+  std::string scene;
+  std::string solver;
+  std::vector<std::string> settings;
+  std::string profile;
+  std::uint64_t seed = 1;
+  std::string trace;
+  bool no_guard = false;
+};
+
+void run_follow(const FollowOptions& o) {
+  camera::Scene scene = camera::read_scene_file(o.scene);
+  camera::CameraProfile profile = scene.profile();
+  if (!o.profile.empty()) {
+    profile = camera::is_preset(o.profile) ? camera::preset_profile(o.profile)
+                                           : camera::read_profile_file(o.profile);
+  }
+  camera::ChaseCameraOptions options;
+  options.solver = o.solver;
+  options.seed = o.seed;
+  options.visibility_guard = !o.no_guard;
+  for (const std::string& s : o.settings) options.solver_options.insert(solvers::split_option(s));
+  const experiments::CameraRun run = experiments::run_camera(scene, profile, options);
+  if (!o.trace.empty()) experiments::write_trace_csv(o.trace, run.trace);
+  std::cout << experiments::summary_paragraph(scene, run) << "\n";
+  if (!o.trace.empty()) std::cout << "Trace written to " << o.trace << "\n";
+}
+
+}  // namespace
+
+void add_follow_command(CLI::App& app) {
+  auto options = std::make_shared<FollowOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "follow", "Run one scene with one solver through the chase camera and write its trace");
+  cmd->add_option("scene", options->scene, "scene file (YAML, see docs/CAMERA.md)")
+      ->required();
+  cmd->add_option("--solver", options->solver,
+                  "registered solver or pipeline, e.g. occlusion-octree, bourne-octree, sls, "
+                  "occlusion-octree>ceres-refine")
+      ->required();
+  cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
+  cmd->add_option("--profile", options->profile,
+                  "camera profile: a preset name (thesis-default, close-follow, high-follow) or "
+                  "a profile file; default: the scene's");
+  cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
+  cmd->add_option("--trace", options->trace, "write the per-frame trace (CSV) here");
+  cmd->add_flag("--no-visibility-guard", options->no_guard,
+                "move wherever the solver says, as Bourne & Sattar's controller did");
+  cmd->callback([options] { run_follow(*options); });
+}
+
+}  // namespace sightline::apps

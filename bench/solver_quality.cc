@@ -1,0 +1,141 @@
+// How close each solver gets to the optimum of the camera problem, and at what cost in time.
+//
+// Camera frames are sampled from the thesis scenes as the occlusion-octree chase camera
+// actually meets them (character state, last camera position, frame interval, the area's
+// desired values). For each frame the reference optimum comes from a fine `grid` lattice
+// over the frame's search cube, refined by `ceres-refine` (the pipeline "grid>ceres-refine"
+// with grid.points = 64, i.e. 262,144 candidates). Every solver then solves the same frame
+// from the last camera position. Printed as a Markdown table: mean cost relative to the
+// reference (1.00 = as good; as a ratio of mean costs, and as the mean of per-frame
+// ratios, which near-zero optima make harsh), frames within 1% of it, frames feasible (look-at visible,
+// clear of geometry), and the mean and p99 time per frame.
+//
+//   build/bench/solver_quality [--frames-per-scene N] [--grid-points K]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "domains/camera/camera_problem.h"
+#include "domains/camera/control/camera_solvers.h"
+#include "domains/camera/control/chase_camera.h"
+#include "domains/camera/scene_file.h"
+#include "experiments/metrics.h"
+
+namespace {
+
+using namespace sightline;
+
+struct SampledFrame {
+  const camera::Scene* scene;
+  camera::CharacterState character;
+  Eigen::Vector3d last_camera;
+  double dt;
+};
+
+struct SolverStats {
+  std::string name;
+  std::vector<double> ratio, seconds;
+  double cost_sum = 0, reference_sum = 0;  // over frames where both are feasible
+  int within_1pct = 0, feasible = 0, frames = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int per_scene = 30;
+  int grid_points = 64;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--frames-per-scene") per_scene = std::atoi(argv[i + 1]);
+    else if (flag == "--grid-points") grid_points = std::atoi(argv[i + 1]);
+  }
+  camera::solver_registry();
+  std::vector<std::string> paths;
+  for (const auto& e : std::filesystem::directory_iterator(SIGHTLINE_SOURCE_DIR "/experiments/scenes")) {
+    if (e.path().extension() == ".yaml") paths.push_back(e.path().string());
+  }
+  std::sort(paths.begin(), paths.end());
+  std::vector<camera::Scene> scenes;
+  scenes.reserve(paths.size());
+  for (const auto& p : paths) scenes.push_back(camera::read_scene_file(p));
+
+  // Sample frames along the occlusion-octree camera's own run.
+  std::vector<SampledFrame> frames;
+  for (const camera::Scene& scene : scenes) {
+    camera::ChaseCamera chase(scene, scene.profile(), {});
+    const std::size_t n = scene.frame_count();
+    const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(per_scene));
+    double previous = scene.frame_time(0) - 1.0 / scene.frame_rate();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = scene.frame_time(i);
+      const camera::CharacterState c = scene.character_at(t);
+      const double dt = std::max(t - previous, 1e-3);
+      previous = t;
+      if (i % stride == stride / 2) frames.push_back({&scene, c, chase.frame().position, dt});
+      chase.update(c, dt);
+    }
+  }
+
+  const std::vector<std::string> names = {"grid", "sls", "sliding-octree", "occlusion-octree",
+                                          "occlusion-octree>ceres-refine"};
+  std::vector<SolverStats> stats;
+  for (const auto& n : names) stats.push_back({n, {}, {}, 0, 0, 0});
+  auto& registry = solvers::SolverRegistry::global();
+  auto reference = registry.create("grid>ceres-refine",
+                                   {{"grid.points", std::to_string(grid_points)}});
+  std::vector<std::unique_ptr<solvers::Solver>> solvers;
+  for (const auto& n : names) solvers.push_back(registry.create(n));
+  double reference_seconds = 0;
+  solvers::SolveContext context;
+  context.want_breakdown = false;
+  std::uint64_t seed = 1;
+  for (const SampledFrame& f : frames) {
+    camera::CameraProblem problem(*f.scene);
+    problem.set_frame(f.character, f.last_camera, f.dt);
+    const double start[3] = {f.last_camera.x(), f.last_camera.y(), f.last_camera.z()};
+    context.seed = seed++;
+    const auto t0 = std::chrono::steady_clock::now();
+    const solvers::SolverResult best = reference->solve(problem.problem(), start, context);
+    reference_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (std::size_t s = 0; s < solvers.size(); ++s) {
+      const auto t1 = std::chrono::steady_clock::now();
+      const solvers::SolverResult r = solvers[s]->solve(problem.problem(), start, context);
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      SolverStats& st = stats[s];
+      ++st.frames;
+      st.seconds.push_back(secs);
+      if (r.feasible()) ++st.feasible;
+      if (r.feasible() && best.feasible()) {
+        // Relative cost; a tiny floor keeps frames whose optimum is ~0 from dividing by 0.
+        const double ratio = (r.cost() + 1e-3) / (best.cost() + 1e-3);
+        st.ratio.push_back(ratio);
+        st.cost_sum += r.cost();
+        st.reference_sum += best.cost();
+        if (r.cost() <= best.cost() * 1.01 + 1e-6) ++st.within_1pct;
+      }
+    }
+  }
+  std::printf("%zu frames from %zu thesis scenes; reference: grid %d^3 > ceres-refine, %.1f ms "
+              "per frame\n\n",
+              frames.size(), scenes.size(), grid_points, 1e3 * reference_seconds / frames.size());
+  std::printf("| solver | mean cost / mean reference cost | mean per-frame ratio | frames within "
+              "1%% | feasible | mean time (us) | p99 time (us) | time / reference time |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  for (SolverStats& st : stats) {
+    double mean_ratio = 0;
+    for (double r : st.ratio) mean_ratio += r;
+    mean_ratio /= std::max<std::size_t>(1, st.ratio.size());
+    double mean_time = 0;
+    for (double s : st.seconds) mean_time += s;
+    mean_time /= std::max<std::size_t>(1, st.seconds.size());
+    std::printf("| %s | %.4f | %.4f | %d / %d | %d / %d | %.0f | %.0f | 1/%.0f |\n",
+                st.name.c_str(), st.cost_sum / std::max(st.reference_sum, 1e-12), mean_ratio, st.within_1pct, static_cast<int>(st.ratio.size()), st.feasible,
+                st.frames, mean_time * 1e6, experiments::percentile(st.seconds, 99) * 1e6,
+                (reference_seconds / frames.size()) / mean_time);
+  }
+  return 0;
+}
