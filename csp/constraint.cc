@@ -20,6 +20,14 @@ std::unique_ptr<IncrementalState> Constraint::make_incremental_state(
   return nullptr;
 }
 
+double Constraint::min_violation(std::span<const double> values,
+                                 std::span<const std::uint8_t> assigned) const {
+  for (VariableId v : scope()) {
+    if (!assigned[v]) return 0.0;
+  }
+  return violation(values);
+}
+
 double Constraint::violation_and_gradient(std::span<const double> values,
                                           std::span<double> gradient) const {
   // Central differences with a step scaled to the magnitude of each coordinate.
@@ -36,6 +44,12 @@ double Constraint::violation_and_gradient(std::span<const double> values,
     gradient[i] = (up - down) / (2 * h);
   }
   return violation(values);
+}
+
+double Constraint::smooth_violation_and_gradient(std::span<const double> values,
+                                                 std::span<double> gradient,
+                                                 double /*smoothing*/) const {
+  return violation_and_gradient(values, gradient);
 }
 
 std::string Constraint::describe() const {

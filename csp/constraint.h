@@ -13,6 +13,7 @@
 //    continuous solvers (Ceres). The default is central finite differences.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -70,12 +71,34 @@ class Constraint {
   virtual std::unique_ptr<IncrementalState> make_incremental_state(
       std::span<const double> values) const;
 
+  // A lower bound on violation() over every completion of a partial assignment, for exact
+  // solvers (bnb): `assigned[v]` (indexed by VariableId, like `values`) is non-zero for the
+  // variables that hold their final value; the others' entries in `values` are meaningless.
+  // The default is violation() when the whole scope is assigned and 0 otherwise, which is
+  // always valid since violations are >= 0. Kinds that can say more override it (a table:
+  // its cheapest tuple compatible with the assigned part); the tighter it is, the earlier
+  // bnb prunes. It must never exceed the true minimum, and must not decrease as more of
+  // the scope is assigned.
+  virtual double min_violation(std::span<const double> values,
+                               std::span<const std::uint8_t> assigned) const;
+
   // True when violation_and_gradient is exact (analytic or automatic differentiation).
   virtual bool has_exact_gradient() const { return false; }
   // Returns violation(values) and writes d violation / d values[scope()[i]] into gradient[i]
   // (gradient.size() == scope().size()). Default: central finite differences.
   virtual double violation_and_gradient(std::span<const double> values,
                                         std::span<double> gradient) const;
+  // A continuously differentiable stand-in for the violation, and its gradient, for
+  // gradient-based solvers (ceres-refine), which stall on kinks. `smoothing` > 0 is the width
+  // of the rounded region, in the units of the quantity whose kink is rounded (the argument
+  // of the abs or hinge: metres for a height deviation, degrees for an angle). Constraints
+  // shaped like |r| or max(0, r) override this with smooth_abs / smooth_hinge below; the
+  // smooth value must be 0 exactly where the violation is 0, so a smoothed optimum of a
+  // satisfiable problem is still a true optimum. Default: violation_and_gradient (already
+  // smooth, or nothing better known).
+  virtual double smooth_violation_and_gradient(std::span<const double> values,
+                                               std::span<double> gradient,
+                                               double smoothing) const;
 
   // Kind and scope as text, for reports: "not_equal(x0, x3)".
   std::string describe() const;
@@ -86,5 +109,33 @@ class Constraint {
   bool hard_;
   std::string label_;
 };
+
+// Smooth forms of the two kinks weighted CSPs are made of, shared by every constraint that
+// overrides smooth_violation_and_gradient. Templates so they also take ceres::Jet (the
+// unqualified sqrt finds Jet's through argument-dependent lookup). `s` > 0 is the width.
+//
+//   smooth_abs(r, s)   = sqrt(r^2 + s^2) - s          (pseudo-Huber: C-infinity, 0 only at
+//                        r = 0, |r| - s <= value <= |r|, slope r / sqrt(r^2 + s^2))
+//   smooth_hinge(r, s) = 0                 if r <= 0  (Huber-rounded max(0, r): C1, exactly 0
+//                        r^2 / (2 s)       if 0 < r < s   on the satisfied side, value and
+//                        r - s / 2         if r >= s      slope continuous at 0 and at s)
+template <class T>
+T smooth_abs(const T& r, double s) {
+  using std::sqrt;
+  return r * r / (sqrt(r * r + s * s) + s);  // = sqrt(r^2 + s^2) - s, without cancellation
+}
+template <class T>
+T smooth_hinge(const T& r, double s) {
+  if (r <= 0.0) return T(0.0);
+  if (r < s) return r * r / (2 * s);
+  return r - s / 2;
+}
+// Their derivatives, for constraints that write gradients by hand.
+inline double smooth_abs_slope(double r, double s) {
+  return r == 0 ? 0.0 : r / std::sqrt(r * r + s * s);
+}
+inline double smooth_hinge_slope(double r, double s) {
+  return r <= 0 ? 0.0 : (r < s ? r / s : 1.0);
+}
 
 }  // namespace sightline::csp

@@ -1,10 +1,25 @@
 // The solvers of solvers/, registered by name. One line per solver.
 #include "solvers/registry.h"
+#include "solvers/bnb.h"
+#include "solvers/ceres_refine.h"
+#include "solvers/grid.h"
+#include "solvers/sliding_octree.h"
+#include "solvers/sls.h"
 
 namespace sightline::solvers {
 
 void register_builtin_solvers(SolverRegistry& registry) {
   (void)registry;
+  register_solver<GridSolver>(registry, "grid",
+      "exhaustive: all discrete combinations x a lattice per continuous dimension");
+  register_solver<SlsSolver>(registry, "sls",
+      "local search: min-conflicts, tabu, swaps, restarts; Gaussian moves if continuous");
+  register_solver<SlidingOctreeSolver>(registry, "sliding-octree",
+      "Bourne's Sliding Octree Solver on a continuous box (2^d children per pass)");
+  register_solver<BranchAndBoundSolver>(registry, "bnb",
+      "exact depth-first branch and bound with forward checking (discrete); proves optimality");
+  register_solver<CeresRefineSolver>(registry, "ceres-refine",
+      "Ceres L-BFGS refinement of the continuous variables; never worse than its start");
 }
 
 }  // namespace sightline::solvers

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -35,24 +36,27 @@ inline double share(AllDifferent::Measure measure, std::int64_t count) {
 }
 
 // Counts in a dense array indexed by key - lo, for integer keys in a known range. Each scope
-// position keeps its own current index and its shift (offset - lo) side by side, so a delta
+// position keeps its current index and its shift (offset - lo) side by side, so a delta
 // reads one slot and two counts and never the assignment: at 1,000,000 queens the memory
-// traffic, not the arithmetic, is the cost.
+// traffic, not the arithmetic, is the cost, so slots are 8 bytes when the shifts fit in 32
+// bits (Shift = std::int32_t) and 16 otherwise.
+template <class Shift>
 class DenseState final : public IncrementalState {
  public:
   DenseState(const AllDifferent& c, AllDifferent::KeyRange range, std::span<const double> values)
-      : measure_(c.measure()), counts_(static_cast<std::size_t>(range.hi - range.lo + 1), 0),
+      : measure_(c.measure()),
+        counts_(static_cast<std::size_t>(range.hi - range.lo + 1), 0),
         slots_(c.scope().size()) {
     const auto scope = c.scope();
     for (std::size_t i = 0; i < scope.size(); ++i) {
-      slots_[i].shift = static_cast<std::int64_t>(c.offsets()[i]) - range.lo;
-      slots_[i].index = index(i, values[scope[i]]);
-      ++counts_[slots_[i].index];
+      slots_[i].shift = static_cast<Shift>(static_cast<std::int64_t>(c.offsets()[i]) - range.lo);
+      slots_[i].index = static_cast<Shift>(index(i, values[scope[i]]));
+      ++counts_[static_cast<std::size_t>(slots_[i].index)];
     }
   }
 
   double delta(std::span<const double>, std::size_t position, double new_value) override {
-    const std::size_t a = slots_[position].index;
+    const auto a = static_cast<std::size_t>(slots_[position].index);
     const std::size_t b = index(position, new_value);
     if (a == b) return 0;
     return move_delta(measure_, counts_[a], counts_[b]);
@@ -61,19 +65,19 @@ class DenseState final : public IncrementalState {
   void commit(std::span<const double>, std::size_t position, double new_value) override {
     Slot& slot = slots_[position];
     const std::size_t b = index(position, new_value);
-    --counts_[slot.index];
+    --counts_[static_cast<std::size_t>(slot.index)];
     ++counts_[b];
-    slot.index = b;
+    slot.index = static_cast<Shift>(b);
   }
 
   double involvement(std::span<const double>, std::size_t position) override {
-    return share(measure_, counts_[slots_[position].index]);
+    return share(measure_, counts_[static_cast<std::size_t>(slots_[position].index)]);
   }
 
  private:
   struct Slot {
-    std::size_t index;   // current key - lo
-    std::int64_t shift;  // offset - lo
+    Shift index;  // current key - lo (below the range size, which fits Shift)
+    Shift shift;  // offset - lo
   };
   // Values of integer domains are integers, so the conversion is exact.
   std::size_t index(std::size_t position, double value) const {
@@ -86,6 +90,17 @@ class DenseState final : public IncrementalState {
   std::vector<std::int32_t> counts_;
   std::vector<Slot> slots_;
 };
+
+// True when every offset - lo, and the range size, fit in 32 bits.
+bool fits_32_bits(const AllDifferent& c, AllDifferent::KeyRange range) {
+  constexpr std::int64_t kMax = INT32_MAX;
+  if (range.hi - range.lo >= kMax) return false;
+  for (double o : c.offsets()) {
+    const std::int64_t shift = static_cast<std::int64_t>(o) - range.lo;
+    if (shift > kMax || shift < -kMax) return false;
+  }
+  return true;
+}
 
 // Counts in a hash map keyed by the (real) key itself.
 class HashCounts {
@@ -107,13 +122,14 @@ template <class Counts>
 class CountingState final : public IncrementalState {
  public:
   CountingState(const AllDifferent& c, Counts counts, std::span<const double> values)
-      : scope_(c.scope()), offsets_(c.offsets()), measure_(c.measure()),
+      : scope_(c.scope()),
+        offsets_(c.offsets()),
+        measure_(c.measure()),
         counts_(std::move(counts)) {
     for (std::size_t i = 0; i < scope_.size(); ++i) counts_.add(key_at(values, i), 1);
   }
 
-  double delta(std::span<const double> values, std::size_t position,
-               double new_value) override {
+  double delta(std::span<const double> values, std::size_t position, double new_value) override {
     const auto a = key_at(values, position);
     const auto b = counts_.key(new_value + offsets_[position]);
     if (a == b) return 0;
@@ -148,8 +164,10 @@ class CountingState final : public IncrementalState {
 AllDifferent::AllDifferent(std::vector<VariableId> scope, std::vector<double> offsets,
                            Measure measure, double weight, bool hard,
                            std::optional<KeyRange> key_range)
-    : Constraint(std::move(scope), weight, hard), offsets_(std::move(offsets)),
-      measure_(measure), key_range_(key_range) {
+    : Constraint(std::move(scope), weight, hard),
+      offsets_(std::move(offsets)),
+      measure_(measure),
+      key_range_(key_range) {
   if (offsets_.empty()) offsets_.assign(this->scope().size(), 0.0);
   if (offsets_.size() != this->scope().size()) {
     throw std::invalid_argument("all_different: " + std::to_string(offsets_.size()) +
@@ -166,6 +184,33 @@ AllDifferent::AllDifferent(std::vector<VariableId> scope, std::vector<double> of
 
 bool AllDifferent::has_zero_offsets() const {
   return std::all_of(offsets_.begin(), offsets_.end(), [](double o) { return o == 0; });
+}
+
+namespace {
+// Sum over the distinct keys of the measure's cost of c equal keys; `keys` gets sorted.
+double repeats(std::vector<double>& keys, AllDifferent::Measure measure) {
+  std::sort(keys.begin(), keys.end());
+  double total = 0;
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i + 1;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    const double c = static_cast<double>(j - i);
+    total += measure == AllDifferent::Measure::kVariables ? c - 1 : c * (c - 1) / 2;
+    i = j;
+  }
+  return total;
+}
+}  // namespace
+
+double AllDifferent::min_violation(std::span<const double> values,
+                                   std::span<const std::uint8_t> assigned) const {
+  const auto scope = this->scope();
+  std::vector<double> keys;
+  keys.reserve(scope.size());
+  for (std::size_t i = 0; i < scope.size(); ++i) {
+    if (assigned[scope[i]]) keys.push_back(values[scope[i]] + offsets_[i]);
+  }
+  return repeats(keys, measure_);
 }
 
 double AllDifferent::violation(std::span<const double> values) const {
@@ -190,21 +235,17 @@ double AllDifferent::violation(std::span<const double> values) const {
   }
   std::vector<double> keys(scope.size());
   for (std::size_t i = 0; i < scope.size(); ++i) keys[i] = values[scope[i]] + offsets_[i];
-  std::sort(keys.begin(), keys.end());
-  double total = 0;
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i + 1;
-    while (j < keys.size() && keys[j] == keys[i]) ++j;
-    const double c = static_cast<double>(j - i);
-    total += measure_ == Measure::kVariables ? c - 1 : c * (c - 1) / 2;
-    i = j;
-  }
-  return total;
+  return repeats(keys, measure_);
 }
 
 std::unique_ptr<IncrementalState> AllDifferent::make_incremental_state(
     std::span<const double> values) const {
-  if (key_range_) return std::make_unique<DenseState>(*this, *key_range_, values);
+  if (key_range_) {
+    if (fits_32_bits(*this, *key_range_)) {
+      return std::make_unique<DenseState<std::int32_t>>(*this, *key_range_, values);
+    }
+    return std::make_unique<DenseState<std::int64_t>>(*this, *key_range_, values);
+  }
   return std::make_unique<CountingState<HashCounts>>(*this, HashCounts(scope().size()), values);
 }
 

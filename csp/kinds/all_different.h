@@ -52,6 +52,11 @@ class AllDifferent : public Constraint {
 
   std::string_view kind() const override { return "all_different"; }
   double violation(std::span<const double> values) const override;
+  // The repeats among the assigned variables alone, in the same measure: whatever the
+  // others take, those keys stay repeated (a valid bound for bnb, growing with the assigned
+  // part).
+  double min_violation(std::span<const double> values,
+                       std::span<const std::uint8_t> assigned) const override;
   std::unique_ptr<IncrementalState> make_incremental_state(
       std::span<const double> values) const override;
 

@@ -111,8 +111,8 @@ std::vector<double> entry_costs(const std::vector<Table::Entry>& entries) {
 
 }  // namespace
 
-Table::Table(std::vector<VariableId> scope, const std::vector<Entry>& entries,
-             double default_cost, double weight, bool hard)
+Table::Table(std::vector<VariableId> scope, const std::vector<Entry>& entries, double default_cost,
+             double weight, bool hard)
     : Constraint(std::move(scope), weight, hard), default_cost_(default_cost) {
   build(flatten_values(entries, arity()), entry_costs(entries));
 }
@@ -134,15 +134,14 @@ void Table::build(std::span<const double> tuple_values, std::span<const double> 
                      TableError::kNoEntry);
   }
   if (!std::isfinite(default_cost_) || default_cost_ < 0) {
-    throw TableError("the default cost must be finite and >= 0, got " +
-                         std::to_string(default_cost_),
-                     TableError::kNoEntry);
+    throw TableError(
+        "the default cost must be finite and >= 0, got " + std::to_string(default_cost_),
+        TableError::kNoEntry);
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(costs[i]) || costs[i] < 0) {
-      throw TableError("tuple " + format_tuple(tuple_values.subspan(i * k, k)) +
-                           " has cost " + std::to_string(costs[i]) +
-                           "; costs must be finite and >= 0",
+      throw TableError("tuple " + format_tuple(tuple_values.subspan(i * k, k)) + " has cost " +
+                           std::to_string(costs[i]) + "; costs must be finite and >= 0",
                        i);
     }
     for (std::size_t p = 0; p < k; ++p) {
@@ -184,9 +183,10 @@ void Table::build(std::span<const double> tuple_values, std::span<const double> 
     strides_[p] = key_space;
     const std::uint64_t np = std::max<std::uint64_t>(1, positions_[p].sorted.size());
     if (key_space > kMaxKeys / np) {
-      throw TableError("the table's tuples combine too many distinct values per position "
-                       "(more than 2^63 combinations) to be indexed",
-                       TableError::kNoEntry);
+      throw TableError(
+          "the table's tuples combine too many distinct values per position "
+          "(more than 2^63 combinations) to be indexed",
+          TableError::kNoEntry);
     }
     key_space *= np;
   }
@@ -205,9 +205,9 @@ void Table::build(std::span<const double> tuple_values, std::span<const double> 
     keys[i] = key;
   }
   auto duplicate = [&](std::size_t first, std::size_t second) {
-    return TableError("tuple " + format_tuple(tuple_values.subspan(second * k, k)) +
-                          " is listed twice",
-                      second, first);
+    return TableError(
+        "tuple " + format_tuple(tuple_values.subspan(second * k, k)) + " is listed twice", second,
+        first);
   };
   const std::uint64_t dense_limit = std::max<std::uint64_t>(4096, 8 * std::uint64_t{n});
   dense_.clear();
@@ -224,8 +224,8 @@ void Table::build(std::span<const double> tuple_values, std::span<const double> 
     sparse_.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       if (!sparse_.emplace(keys[i], costs_[i]).second) {
-        const auto first = static_cast<std::size_t>(
-            std::find(keys.begin(), keys.end(), keys[i]) - keys.begin());
+        const auto first =
+            static_cast<std::size_t>(std::find(keys.begin(), keys.end(), keys[i]) - keys.begin());
         throw duplicate(first, i);
       }
     }
@@ -366,10 +366,10 @@ ConstraintKindInfo table_kind() {
         std::vector<Table::Entry> entries;
         const Spec* tuples = r.params.find("tuples");
         const std::vector<Spec> no_items;
-        const std::vector<Spec>& items =
-            tuples ? tuples->items("a list of tuples, each [values..., cost] or "
-                                   "{values: [...], cost: c}")
-                   : no_items;
+        const std::vector<Spec>& items = tuples ? tuples->items(
+                                                      "a list of tuples, each [values..., cost] or "
+                                                      "{values: [...], cost: c}")
+                                                : no_items;
         entries.reserve(items.size());
         for (const Spec& item : items) {
           Table::Entry e;
@@ -402,9 +402,8 @@ ConstraintKindInfo table_kind() {
             const double v = value_nodes[p]->as_number("a value");
             const Variable& var = r.problem.variable(r.scope[p]);
             if (!var.domain.contains(v)) {
-              value_nodes[p]->fail("value " + value_nodes[p]->preview() +
-                                   " is not in the domain " + var.domain.describe() +
-                                   " of variable '" + var.name + "'");
+              value_nodes[p]->fail("value " + value_nodes[p]->preview() + " is not in the domain " +
+                                   var.domain.describe() + " of variable '" + var.name + "'");
             }
             e.values.push_back(v);
           }

@@ -78,8 +78,7 @@ class Table : public Constraint {
   // The same from flat arrays, for readers of large tables: tuple i is
   // tuple_values[i * arity .. (i + 1) * arity), its cost costs[i].
   Table(std::vector<VariableId> scope, std::span<const double> tuple_values,
-        std::span<const double> costs, double default_cost, double weight = 1.0,
-        bool hard = false);
+        std::span<const double> costs, double default_cost, double weight = 1.0, bool hard = false);
 
   std::string_view kind() const override { return "table"; }
   double violation(std::span<const double> values) const override;
@@ -120,8 +119,8 @@ class Table : public Constraint {
   // Distinct values of one position. Integer values in a compact range are looked up in a
   // direct array; others by binary search in the sorted list.
   struct PositionValues {
-    std::vector<double> sorted;       // distinct values, ascending; local index = rank
-    std::int64_t direct_lo = 0;       // direct[v - direct_lo] = local index or -1
+    std::vector<double> sorted;  // distinct values, ascending; local index = rank
+    std::int64_t direct_lo = 0;  // direct[v - direct_lo] = local index or -1
     std::vector<std::int32_t> direct;
   };
 

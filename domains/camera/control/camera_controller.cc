@@ -1,5 +1,9 @@
 #include "domains/camera/control/camera_controller.h"
 
+#include <stdexcept>
+
+#include "domains/camera/baselines/pull_forward.h"
+#include "domains/camera/baselines/spring_arm.h"
 #include "domains/camera/control/chase_camera.h"
 
 namespace sightline::camera {
@@ -11,6 +15,7 @@ const char* to_string(CutReason reason) {
     case CutReason::kBackedUpToObstacle: return "backed up to an obstacle";
     case CutReason::kVisibilityLost: return "no smooth move keeps the character visible";
     case CutReason::kStuck: return "stuck behind an obstacle";
+    case CutReason::kTooFast: return "moved faster than smooth motion allows";
   }
   return "?";
 }
@@ -18,6 +23,21 @@ const char* to_string(CutReason reason) {
 std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
                                                   const CameraProfile& profile,
                                                   const ChaseCameraOptions& options) {
+  if (name == "spring-arm" || name == "pull-forward") {
+    // The baselines have their own options (defaults); they share the smooth-motion bound
+    // that decides what counts as a cut, and take no solver options.
+    if (!options.solver_options.empty()) {
+      throw std::invalid_argument("'" + name + "' is a baseline camera and takes no solver options");
+    }
+    if (name == "spring-arm") {
+      SpringArmOptions arm;
+      arm.max_speed = options.max_speed;
+      return std::make_unique<SpringArm>(scene, profile, arm);
+    }
+    PullForwardOptions pull;
+    pull.max_speed = options.max_speed;
+    return std::make_unique<PullForward>(scene, profile, pull);
+  }
   ChaseCameraOptions chase = options;
   chase.solver = name;
   return std::make_unique<ChaseCamera>(scene, profile, chase);

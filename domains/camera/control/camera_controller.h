@@ -18,7 +18,10 @@
 
 namespace sightline::camera {
 
-enum class CutReason { kNone, kLeftEnclosedArea, kBackedUpToObstacle, kVisibilityLost, kStuck };
+enum class CutReason {
+  kNone, kLeftEnclosedArea, kBackedUpToObstacle, kVisibilityLost, kStuck,
+  kTooFast  // a baseline moved further than smooth motion allows in one frame
+};
 const char* to_string(CutReason reason);
 
 struct CameraFrame {

@@ -1,0 +1,51 @@
+// sightline: the command-line program. Thin: each subcommand parses its options, calls the
+// libraries and prints (see commands.h). Here only the error policy lives: any exception
+// from a library becomes "sightline: <message>" on stderr, exit status 2 for bad input or
+// usage, 1 for a run that failed its own check; never a crash.
+#include <exception>
+#include <iostream>
+
+#include "apps/commands.h"
+#include "apps/solve_options.h"
+#include "domains/camera/control/camera_solvers.h"
+#include "domains/camera/control/camera_solvers.h"
+
+int main(int argc, char** argv) {
+  namespace apps = sightline::apps;
+  // The camera's own solvers join the one registry, so every command can name them.
+  sightline::camera::solver_registry();
+  // Every command sees every solver: the generic ones and the camera's octrees.
+  sightline::camera::register_camera_solvers(sightline::solvers::SolverRegistry::global());
+  CLI::App app{"sightline: weighted constraint satisfaction with pluggable solvers"};
+  app.name("sightline");
+  app.require_subcommand(1);
+  apps::add_solve_command(app);
+  apps::add_nqueens_command(app);
+  apps::add_colour_command(app);
+  apps::add_solvers_command(app);
+  apps::add_kinds_command(app);
+  apps::add_compare_command(app);
+  apps::add_run_command(app);
+  apps::add_scene_command(app);
+  apps::add_follow_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help arrives as a ParseError
+    std::cerr << "sightline: " << e.what() << " (see --help)\n";
+    return 2;
+  } catch (const apps::RunFailed& e) {
+    std::cout.flush();
+    std::cerr << "sightline: " << e.what() << '\n';
+    return 1;
+  } catch (const std::exception& e) {
+    std::cout.flush();
+    std::cerr << "sightline: " << e.what() << '\n';
+    return 2;
+  } catch (...) {
+    std::cout.flush();
+    std::cerr << "sightline: an unexpected error of unknown type\n";
+    return 2;
+  }
+  return 0;
+}

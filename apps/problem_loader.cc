@@ -1,0 +1,42 @@
+#include "apps/problem_loader.h"
+
+#include <string_view>
+
+#include "csp/files/problem_file.h"
+#include "csp/files/wcsp_reader.h"
+#include "csp/input_error.h"
+#include "domains/colouring/colouring_problem.h"
+#include "domains/colouring/dimacs_reader.h"
+
+namespace sightline::apps {
+namespace {
+
+bool ends_with(std::string_view text, std::string_view suffix) {
+  return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;
+}
+
+}  // namespace
+
+std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options) {
+  const bool graph = ends_with(path, ".col");
+  if (!graph && options.colours > 0) {
+    throw csp::InputError({path, 0, 0},
+                          "--colours applies to DIMACS graphs (.col) only, not to this file");
+  }
+  if (ends_with(path, ".yaml") || ends_with(path, ".yml")) return csp::read_problem_file(path);
+  if (graph) {
+    if (options.colours < 1) {
+      throw csp::InputError({path, 0, 0},
+                            "a DIMACS graph is coloured with a number of colours: add --colours K");
+    }
+    return colouring::build_colouring_problem(colouring::read_dimacs_graph(path), options.colours);
+  }
+  if (ends_with(path, ".wcsp") || ends_with(path, ".wcsp.gz")) {
+    return csp::read_wcsp_file(path);
+  }
+  throw csp::InputError({path, 0, 0},
+                        "unknown problem file type (expected .yaml/.yml, .col with --colours K, "
+                        ".wcsp or .wcsp.gz)");
+}
+
+}  // namespace sightline::apps

@@ -1,0 +1,22 @@
+// Loading a problem for `sightline solve` by the file's extension:
+//   .yaml / .yml        a problem file (csp/files/problem_file.h)
+//   .col                a DIMACS graph, coloured with `colours` colours (domains/colouring)
+//   .wcsp / .wcsp.gz    a toulbar2 weighted CSP (csp/files/wcsp_reader.h)
+// Anything else, a .col without a number of colours, and a number of colours for another
+// file type, are InputErrors naming the file.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "csp/problem.h"
+
+namespace sightline::apps {
+
+struct LoadOptions {
+  int colours = 0;  // for graphs; 0 = not given
+};
+
+std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options);
+
+}  // namespace sightline::apps

@@ -1,0 +1,101 @@
+#include "apps/report.h"
+
+#include <algorithm>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "apps/text_table.h"
+
+namespace sightline::apps {
+
+std::string describe_problem(const csp::Problem& problem) {
+  std::size_t discrete = 0, hard = 0;
+  for (const auto& v : problem.variables()) discrete += v.domain.is_discrete() ? 1 : 0;
+  for (csp::ConstraintId c = 0; c < problem.num_constraints(); ++c) {
+    hard += problem.constraint(c).is_hard() ? 1 : 0;
+  }
+  std::ostringstream out;
+  out << problem.name() << ": " << problem.num_variables() << " variables (" << discrete
+      << " discrete, " << problem.num_variables() - discrete << " continuous), "
+      << problem.num_constraints() << " constraints (" << hard << " hard, "
+      << problem.num_constraints() - hard << " soft)";
+  return out.str();
+}
+
+void print_result(std::ostream& out, const csp::Problem& problem,
+                  const solvers::SolverResult& result, const std::string& solver_name,
+                  std::size_t top) {
+  out << result.brief_report(solver_name) << '\n';
+  if (result.breakdown.empty() && problem.num_constraints() > 0) return;
+  std::vector<const csp::ConstraintCost*> violated;
+  std::size_t hard = 0;
+  for (const auto& c : result.breakdown) {
+    if (c.violation > 0) {
+      violated.push_back(&c);
+      hard += c.hard ? 1 : 0;
+    }
+  }
+  out << "violated constraints: " << violated.size() << " of " << problem.num_constraints();
+  if (violated.empty()) {
+    out << '\n';
+    return;
+  }
+  out << " (" << hard << " hard, " << violated.size() - hard << " soft)\n";
+  // Hard ones first, then by cost: the order in which they matter.
+  const std::size_t shown = std::min(top, violated.size());
+  std::partial_sort(violated.begin(), violated.begin() + static_cast<std::ptrdiff_t>(shown),
+                    violated.end(), [](const auto* a, const auto* b) {
+                      if (a->hard != b->hard) return a->hard;
+                      return a->cost > b->cost;
+                    });
+  TextTable table;
+  table.column("constraint")
+      .column("kind")
+      .column("hard")
+      .column("violation", TextTable::Align::kRight)
+      .column("cost", TextTable::Align::kRight);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto& c = *violated[i];
+    const csp::Constraint& constraint = problem.constraint(c.id);
+    table.add_row({constraint.label().empty() ? constraint.describe() : constraint.label(),
+                   std::string(constraint.kind()), c.hard ? "hard" : "soft",
+                   format_number(c.violation), format_number(c.cost)});
+  }
+  out << "costliest " << shown << ":\n";
+  table.print(out);
+}
+
+void write_solution(const std::string& path, const csp::Problem& problem,
+                    std::span<const double> values, std::ostream& out) {
+  std::ostringstream text;
+  text.precision(std::numeric_limits<double>::max_digits10);
+  for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
+    const csp::Domain& domain = problem.variable(v).domain;
+    if (v > 0) text << ' ';
+    if (domain.is_discrete()) {
+      const auto index = domain.index_of(values[v]);
+      if (!index) {
+        throw std::invalid_argument("value " + format_number(values[v], 17) + " of variable '" +
+                                    problem.variable(v).name + "' is not in its domain " +
+                                    domain.describe());
+      }
+      text << *index;
+    } else {
+      text << values[v];
+    }
+  }
+  text << '\n';
+  if (path == "-") {
+    out << text.str();
+    return;
+  }
+  std::ofstream file(path);
+  file << text.str();
+  file.close();
+  if (!file) throw std::runtime_error("cannot write the solution file '" + path + "'");
+}
+
+}  // namespace sightline::apps

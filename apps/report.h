@@ -1,0 +1,33 @@
+// Printing what a solve produced: the one-line brief report, a summary of the per-constraint
+// breakdown, and the solution file.
+//
+// The solution file follows toulbar2's `-w` convention so the two tools can be compared
+// value for value: every variable's value in variable order, separated by spaces, a discrete
+// value written as its index (from 0) in its domain, a continuous one as the number itself.
+#pragma once
+
+#include <ostream>
+#include <span>
+#include <string>
+
+#include "csp/problem.h"
+#include "solvers/solver.h"
+
+namespace sightline::apps {
+
+// "australia: 7 variables (7 discrete, 0 continuous), 9 constraints (0 hard, 9 soft)".
+std::string describe_problem(const csp::Problem& problem);
+
+// The brief report, then "violated constraints: V of C (H hard, S soft)" and the `top`
+// costliest violated ones with their labels.
+void print_result(std::ostream& out, const csp::Problem& problem,
+                  const solvers::SolverResult& result, const std::string& solver_name,
+                  std::size_t top = 5);
+
+// Writes `values` in the format above to `path` ("-" = `out`). Throws std::runtime_error
+// when the file cannot be written, std::invalid_argument when a discrete value is not in its
+// domain (a solver bug, never a user's).
+void write_solution(const std::string& path, const csp::Problem& problem,
+                    std::span<const double> values, std::ostream& out);
+
+}  // namespace sightline::apps

@@ -1,0 +1,85 @@
+// `sightline scene check SCENE.yaml`: reads and validates a scene file (docs/CAMERA.md) and
+// prints its summary: boxes, areas, character, duration, frames, camera and profile. A bad
+// file is an InputError ("FILE:LINE:COL: what was expected"), which main turns into a
+// message and exit status 2.
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "apps/commands.h"
+#include "domains/camera/camera_problem.h"
+#include "domains/camera/scene_file.h"
+
+namespace sightline::apps {
+namespace {
+
+std::string vec(const Eigen::Vector3d& v) {
+  std::ostringstream out;
+  out << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+  return out.str();
+}
+
+std::string plural(std::size_t n, const std::string& word, const std::string& words = "") {
+  return std::to_string(n) + " " + (n == 1 ? word : words.empty() ? word + "s" : words);
+}
+
+void check_scene(const std::string& path) {
+  const camera::Scene scene = camera::read_scene_file(path);
+  // Building the camera problem once checks the profile and its extras against the scene.
+  const camera::CameraProblem problem(scene);
+  const camera::CameraProfile& profile = scene.profile();
+
+  std::cout << "Scene '" << scene.name() << "' (" << path << "): OK\n";
+  if (!scene.description().empty()) std::cout << "  " << scene.description() << "\n";
+  std::cout << "  boxes:      " << plural(scene.solids().size(), "solid box", "solid boxes");
+  if (!scene.solids().empty()) {
+    const camera::Aabb b = scene.solid_tree().bounds();
+    std::cout << " within " << vec(b.min) << " .. " << vec(b.max);
+  }
+  std::cout << "\n";
+  std::size_t enclosed = 0;
+  std::string names;
+  for (const camera::Area& a : scene.areas()) {
+    enclosed += a.kind == camera::AreaKind::kEnclosed;
+    names += (names.empty() ? "" : ", ") + a.name + " (" + camera::to_string(a.kind) + ")";
+  }
+  std::cout << "  areas:      " << plural(scene.areas().size(), "area");
+  if (!scene.areas().empty()) {
+    std::cout << ", " << enclosed << " enclosed, " << scene.areas().size() - enclosed
+              << " semi-enclosed: " << names;
+  }
+  std::cout << "\n";
+  const camera::CharacterShape& c = scene.character();
+  std::cout << "  character:  " << c.size.x() << " x " << c.size.y() << " x " << c.size.z()
+            << " m, looking at " << c.look_at_height << " m above the feet\n";
+  const camera::Trajectory& t = scene.trajectory();
+  std::cout << "  trajectory: " << plural(t.keyframes().size(), "keyframe") << ", t = "
+            << t.start_time() << " .. " << t.end_time() << " s (" << t.duration() << " s)\n";
+  std::cout << "  frames:     " << scene.frame_count() << " at " << scene.frame_rate()
+            << " frames per second\n";
+  std::cout << "  camera:     start " << vec(scene.start_camera_position())
+            << (scene.camera_start() ? "" : " (the profile's ideal spot)") << "\n";
+  std::cout << "  profile:    " << profile.name << " (" << scene.profile_source() << "): height "
+            << profile.height.desired << " m, distance " << profile.distance.desired
+            << " m, orientation " << profile.orientation.desired << " deg";
+  if (!profile.extras.empty()) std::cout << ", " << plural(profile.extras.size(), "extra constraint");
+  std::cout << "\n";
+  std::cout << "  problem:    " << problem.problem().num_variables() << " variables, "
+            << plural(problem.problem().num_constraints(), "constraint") << "\n";
+}
+
+}  // namespace
+
+void add_scene_command(CLI::App& app) {
+  CLI::App* scene = app.add_subcommand("scene", "work with camera scene files");
+  scene->require_subcommand(1);
+  CLI::App* check = scene->add_subcommand(
+      "check", "validate a scene file and print its summary (boxes, areas, duration, frames, "
+               "profile)");
+  auto path = std::make_shared<std::string>();
+  check->add_option("scene", *path, "scene file (YAML, see docs/CAMERA.md)")->required();
+  check->callback([path] { check_scene(*path); });
+}
+
+}  // namespace sightline::apps

@@ -1,0 +1,162 @@
+// wcsp_table: sls, bnb and sls>bnb against toulbar2 on .wcsp instances, as a Markdown table
+// (the one in docs/BENCHMARKS.md).
+//
+//   wcsp_table [--runs N] [--time-limit S] [--toulbar2 PATH] FILE.wcsp...
+//
+// Per instance: the known optimum (NAME.ub beside the file, if any), then for each of our
+// solvers the cost reached ("*" = proved optimal; "inf" = no feasible assignment found) and
+// the median solve time over the runs (seeds 1..N, the time the solver reports: reading
+// the file is not included), then toulbar2's optimum, the median of the time it prints
+// ("Optimum: C in ... and T seconds") and of the wall time of the whole process (start-up
+// and reading included). Not a Google Benchmark program: it compares whole runs of an
+// external solver, which Google Benchmark cannot time.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+#include "csp/files/wcsp_reader.h"
+#include "solvers/registry.h"
+
+namespace {
+
+using namespace sightline;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+std::string seconds(double s) {
+  std::ostringstream out;
+  if (s < 0.001) {
+    out << std::fixed << std::setprecision(2) << s * 1e3 << " ms";
+  } else if (s < 1) {
+    out << std::fixed << std::setprecision(1) << s * 1e3 << " ms";
+  } else {
+    out << std::fixed << std::setprecision(2) << s << " s";
+  }
+  return out.str();
+}
+
+struct Cell {
+  std::string cost;
+  double time = 0;
+};
+
+Cell run_ours(const csp::Problem& problem, const std::string& solver, int runs, double limit) {
+  Cell cell;
+  std::vector<double> times;
+  for (int seed = 1; seed <= runs; ++seed) {
+    solvers::OptionValues options;
+    if (solver == "sls") options["restarts"] = "200";
+    if (solver == "sls>bnb") options["sls.restarts"] = "200";
+    auto s = solvers::SolverRegistry::global().create(solver, options);
+    solvers::SolveContext context;
+    context.seed = static_cast<std::uint64_t>(seed);
+    context.limits.time_limit_seconds = limit;
+    context.want_breakdown = false;
+    const auto r = s->solve(problem, problem.default_assignment(), context);
+    times.push_back(r.wall_seconds);
+    std::ostringstream c;
+    if (r.feasible()) {
+      c << r.cost() << (r.stop == solvers::StopReason::kProvenOptimal ? "*" : "");
+    } else {
+      c << "inf (hard " << r.score.hard << ")";
+    }
+    if (seed == 1) {
+      cell.cost = c.str();
+    } else if (cell.cost != c.str()) {
+      cell.cost += " / " + c.str();  // seeds disagree: show every outcome
+    }
+  }
+  cell.time = median(times);
+  return cell;
+}
+
+struct Toulbar2Cell {
+  std::string optimum = "-";
+  double reported = 0, wall = 0;
+};
+
+Toulbar2Cell run_toulbar2(const std::string& toulbar2, const std::string& path, int runs) {
+  Toulbar2Cell cell;
+  std::vector<double> reported, wall;
+  const std::regex optimum(R"(Optimum: (\d+) .* and ([0-9.eE+-]+) seconds)");
+  for (int i = 0; i < runs; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    FILE* pipe = popen(("'" + toulbar2 + "' '" + path + "' 2>&1").c_str(), "r");
+    if (!pipe) return cell;
+    std::string output;
+    std::array<char, 4096> buffer;
+    while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+    pclose(pipe);
+    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    std::smatch m;
+    if (std::regex_search(output, m, optimum)) {
+      cell.optimum = m[1];
+      reported.push_back(std::stod(m[2]));
+    }
+  }
+  cell.reported = median(reported);
+  cell.wall = median(wall);
+  return cell;
+}
+
+std::string known_optimum(const std::string& path) {
+  std::filesystem::path p(path);
+  std::string stem = p.filename().string();
+  stem = stem.substr(0, stem.find(".wcsp"));
+  std::ifstream in((p.parent_path() / (stem + ".ub")).string());
+  std::string ub;
+  return in >> ub ? ub : "?";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sls, bnb and sls>bnb against toulbar2 on .wcsp files, as a Markdown table"};
+  int runs = 3;
+  double limit = 60;
+  std::string toulbar2 = "toulbar2";
+  std::vector<std::string> files;
+  app.add_option("--runs", runs, "runs per solver (seeds 1..N); times are medians")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--time-limit", limit, "seconds per run of our solvers")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--toulbar2", toulbar2, "the toulbar2 program");
+  app.add_option("files", files, ".wcsp files")->required();
+  CLI11_PARSE(app, argc, argv);
+
+  std::cout << "| instance | optimum | sls | time | bnb | time | sls>bnb | time | toulbar2 | "
+               "its time | wall |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const std::string& path : files) {
+    std::unique_ptr<csp::Problem> problem;
+    try {
+      problem = csp::read_wcsp_file(path);
+    } catch (const std::exception& e) {
+      std::cerr << e.what() << "\n";
+      return 1;
+    }
+    std::string name = std::filesystem::path(path).filename().string();
+    name = name.substr(0, name.find(".wcsp"));
+    std::cout << "| " << name << " | " << known_optimum(path);
+    for (const char* solver : {"sls", "bnb", "sls>bnb"}) {
+      const Cell c = run_ours(*problem, solver, runs, limit);
+      std::cout << " | " << c.cost << " | " << seconds(c.time);
+    }
+    const Toulbar2Cell t = run_toulbar2(toulbar2, path, runs);
+    std::cout << " | " << t.optimum << " | " << seconds(t.reported) << " | " << seconds(t.wall)
+              << " |\n"
+              << std::flush;
+  }
+  return 0;
+}

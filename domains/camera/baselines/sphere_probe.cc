@@ -1,0 +1,44 @@
+#include "domains/camera/baselines/sphere_probe.h"
+
+#include <vector>
+
+namespace sightline::camera {
+
+namespace {
+
+BoxTree grow_boxes(const Scene& scene, double radius) {
+  std::vector<Aabb> grown;
+  grown.reserve(scene.solids().size());
+  const Eigen::Vector3d r = Eigen::Vector3d::Constant(radius);
+  for (const SolidBox& solid : scene.solids()) grown.push_back({solid.box.min - r, solid.box.max + r});
+  return BoxTree(std::move(grown));
+}
+
+}  // namespace
+
+SphereProbe::SphereProbe(const Scene& scene, double radius)
+    : scene_(&scene), radius_(radius), grown_(grow_boxes(scene, radius)) {}
+
+std::optional<double> SphereProbe::first_contact(const Eigen::Vector3d& a,
+                                                 const Eigen::Vector3d& b) const {
+  const double length = (b - a).norm();
+  // Touching already at the start (Unreal: a sweep that starts in penetration).
+  if (scene_->clearance(a, radius_) < radius_) return 0.0;
+  if (length == 0) return std::nullopt;
+  const std::optional<BoxTree::Hit> broad = grown_.first_hit(a, b);
+  if (!broad) return std::nullopt;  // no grown box is met, so no rounded one either
+  // Sphere tracing from the broad-phase hit: t advances by the gap (d - r) / length. The
+  // distance query is limited to what could still matter (the rest of the segment plus r).
+  double t = broad->t;
+  for (int step = 0; step < kMaxTraceSteps; ++step) {
+    const Eigen::Vector3d p = a + t * (b - a);
+    const double limit = radius_ + (1 - t) * length + kContactTolerance;
+    const double gap = scene_->clearance(p, limit) - radius_;
+    if (gap <= kContactTolerance) return t;
+    t += gap / length;
+    if (t >= 1) return std::nullopt;
+  }
+  return t;  // still clear here; stopping early only pulls the camera in a little more
+}
+
+}  // namespace sightline::camera

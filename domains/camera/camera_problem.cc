@@ -1,0 +1,140 @@
+#include "domains/camera/camera_problem.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "csp/constraint_kinds.h"
+#include "csp/kinds/constraint_entry.h"
+#include "domains/camera/constraints/clearance.h"
+#include "domains/camera/constraints/occlusion.h"
+#include "domains/camera/constraints/smooth_constraints.h"
+
+namespace sightline::camera {
+
+CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
+    : scene_(&scene),
+      profile_(&profile),
+      problem_(std::make_unique<csp::Problem>("camera: " + scene.name())),
+      areas_(scene, profile) {
+  if (const std::string error = profile.validate(); !error.empty()) {
+    throw std::invalid_argument("camera profile '" + profile.name + "': " + error);
+  }
+  csp::Problem& p = *problem_;
+  // The scene's camera start, or this profile's ideal spot at the first keyframe.
+  const CharacterState first = scene.character_at(scene.trajectory().start_time());
+  const Eigen::Vector3d start =
+      scene.camera_start() ? *scene.camera_start()
+                           : ideal_camera_position(first, profile.height.desired,
+                                                   profile.distance.desired,
+                                                   profile.orientation.desired);
+  const double h = profile.search_half_size;
+  p.add_variable("cam_x", csp::Domain::real_interval(start.x() - h, start.x() + h));
+  p.add_variable("cam_y", csp::Domain::real_interval(start.y() - h, start.y() + h));
+  p.add_variable("cam_z", csp::Domain::real_interval(start.z() - h, start.z() + h));
+  frame_ = FrameParameters::add_to(p.parameters());
+
+  auto add = [&](std::unique_ptr<csp::Constraint> c, const char* label) {
+    c->set_label(label);
+    return p.add_constraint(std::move(c));
+  };
+  ids_.height = add(std::make_unique<HeightConstraint>(kCamY, frame_, profile.height.weight),
+                    "height");
+  ids_.distance = add(
+      std::make_unique<DistanceConstraint>(kCamX, kCamZ, frame_, profile.distance.weight),
+      "distance");
+  ids_.orientation = add(
+      std::make_unique<OrientationConstraint>(kCamX, kCamZ, frame_, profile.orientation.weight),
+      "orientation");
+  ids_.frame_coherence = add(std::make_unique<FrameCoherenceConstraint>(
+                                 kCamX, kCamY, kCamZ, frame_, profile.frame_coherence_weight),
+                             "frame coherence");
+  ids_.look_at = add(std::make_unique<LookAtVisibleConstraint>(
+                         kCamX, kCamY, kCamZ, scene, frame_, profile.look_at_weight,
+                         profile.look_at_hard),
+                     "look-at visible");
+  if (profile.visible_fraction_weight > 0) {
+    ids_.visible_fraction =
+        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+                                                       profile.visible_fraction_weight),
+            "body visible");
+  }
+  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+                                                             profile.clearance_weight,
+                                                             profile.clearance_hard),
+                       "clearance");
+  add_extras();
+  // A meaningful first frame: the scene's start, one frame interval.
+  set_frame(first, start, 1.0 / scene.frame_rate());
+}
+
+void CameraProblem::add_extras() {
+  const csp::ConstraintKinds& kinds = csp::ConstraintKinds::global();
+  for (const csp::Spec& entry : profile_->extras) {
+    if (!entry.is_map()) entry.fail("expected a constraint: {kind: ..., scope: [cam_y], ...}");
+    const std::string& kind = entry.at("kind").as_string("a constraint kind name");
+    const csp::Spec* scope = entry.find("scope");
+    const csp::Spec* vars = entry.find("vars");
+    if ((scope != nullptr) == (vars != nullptr)) {
+      entry.fail("expected exactly one of 'scope' and its synonym 'vars' (a list of camera "
+                 "variables: cam_x, cam_y, cam_z)");
+    }
+    std::vector<csp::VariableId> ids;
+    for (const csp::Spec& item : (scope ? scope : vars)->items("a list of camera variables")) {
+      const std::string& name = item.as_string("a camera variable name");
+      const auto id = problem_->find_variable(name);
+      if (!id) item.fail("unknown variable '" + name + "' (known: cam_x, cam_y, cam_z)");
+      ids.push_back(*id);
+    }
+    if (ids.empty()) entry.fail("expected at least one variable in the scope");
+    auto constraint = csp::create_constraint(kinds, *problem_, kind, ids, csp::read_weight(entry),
+                                             csp::read_hard(entry), entry, entry.where());
+    try {
+      ids_.extras.push_back(problem_->add_constraint(std::move(constraint)));
+    } catch (const std::invalid_argument& e) {
+      entry.fail(e.what());
+    }
+  }
+}
+
+AreaTransition CameraProblem::set_frame(const CharacterState& character,
+                                        const Eigen::Vector3d& last_camera, double dt) {
+  if (!(dt > 0) || !std::isfinite(dt)) {
+    throw std::invalid_argument("camera frame interval dt must be > 0");
+  }
+  character_ = character;
+  const AreaTransition transition = areas_.update(character.position);
+  const EffectiveProfile& e = areas_.current();
+  FrameValues values;
+  values.feet = character.position;
+  values.yaw = character.yaw;
+  values.velocity = character.velocity;
+  values.look_at = scene_->character().look_at(character.position);
+  values.last_camera = last_camera;
+  values.dt = dt;
+  values.t = character.t;
+  values.desired_height = e.desired_height;
+  values.desired_distance = e.desired_distance;
+  values.desired_orientation = e.desired_orientation;
+  values.clearance_radius = profile_->clearance_radius;
+  frame_.write(problem_->parameters(), values);
+  set_search_box(last_camera, profile_->search_half_size);
+  return transition;
+}
+
+void CameraProblem::set_search_box(const Eigen::Vector3d& centre, double half_size) {
+  if (!(half_size > 0) || !std::isfinite(half_size) || !centre.allFinite()) {
+    throw std::invalid_argument("camera search box needs a finite centre and half size > 0");
+  }
+  for (csp::VariableId v = 0; v < 3; ++v) {
+    problem_->set_domain(v, csp::Domain::real_interval(centre[v] - half_size,
+                                                       centre[v] + half_size));
+  }
+}
+
+Eigen::Vector3d CameraProblem::ideal_position() const {
+  const EffectiveProfile& e = areas_.current();
+  return ideal_camera_position(character_, e.desired_height, e.desired_distance,
+                               e.desired_orientation);
+}
+
+}  // namespace sightline::camera

@@ -1,0 +1,53 @@
+#include "domains/camera/constraints/occlusion.h"
+
+#include <algorithm>
+
+namespace sightline::camera {
+
+std::array<Eigen::Vector3d, kBodySamples> body_sample_points(const Aabb& body) {
+  const Eigen::Vector3d c = body.centre();
+  const Eigen::Vector3d h = 0.4 * body.size();  // corners pulled 20% of the way to the centre
+  std::array<Eigen::Vector3d, kBodySamples> points;
+  points[0] = c;
+  int k = 1;
+  for (int sx = -1; sx <= 1; sx += 2) {
+    for (int sy = -1; sy <= 1; sy += 2) {
+      for (int sz = -1; sz <= 1; sz += 2) {
+        points[k++] = c + Eigen::Vector3d(sx * h.x(), sy * h.y(), sz * h.z());
+      }
+    }
+  }
+  return points;
+}
+
+double visible_fraction(const Scene& scene, const Eigen::Vector3d& camera, const Aabb& body) {
+  int visible = 0;
+  for (const Eigen::Vector3d& p : body_sample_points(body)) visible += scene.line_of_sight(camera, p);
+  return static_cast<double>(visible) / kBodySamples;
+}
+
+double LookAtVisibleConstraint::violation(std::span<const double> values) const {
+  const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
+  const Eigen::Vector3d look(frame_.look_x.value(), frame_.look_y.value(), frame_.look_z.value());
+  return scene_->line_of_sight(camera, look) ? 0.0 : 1.0;
+}
+
+double LookAtVisibleConstraint::violation_and_gradient(std::span<const double> values,
+                                                       std::span<double> gradient) const {
+  std::fill(gradient.begin(), gradient.end(), 0.0);
+  return violation(values);
+}
+
+double BodyVisibilityConstraint::violation(std::span<const double> values) const {
+  const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
+  const Eigen::Vector3d feet(frame_.char_x.value(), frame_.char_y.value(), frame_.char_z.value());
+  return 1.0 - visible_fraction(*scene_, camera, scene_->character().body_at(feet));
+}
+
+double BodyVisibilityConstraint::violation_and_gradient(std::span<const double> values,
+                                                        std::span<double> gradient) const {
+  std::fill(gradient.begin(), gradient.end(), 0.0);
+  return violation(values);
+}
+
+}  // namespace sightline::camera

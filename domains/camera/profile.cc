@@ -1,0 +1,68 @@
+#include "domains/camera/profile.h"
+
+#include <cmath>
+
+namespace sightline::camera {
+
+const char* to_string(AreaKind kind) {
+  return kind == AreaKind::kEnclosed ? "enclosed" : "semi-enclosed";
+}
+
+std::optional<AreaKind> area_kind_from_string(const std::string& text) {
+  if (text == "enclosed") return AreaKind::kEnclosed;
+  if (text == "semi-enclosed") return AreaKind::kSemiEnclosed;
+  return std::nullopt;
+}
+
+namespace {
+
+std::string check_adaptation(const AreaAdaptation& a, const std::string& where) {
+  if (a.ceiling_margin && (!std::isfinite(*a.ceiling_margin) || *a.ceiling_margin < 0)) {
+    return where + ".ceiling_margin must be a finite number >= 0";
+  }
+  if (a.distance_fraction &&
+      (!std::isfinite(*a.distance_fraction) || *a.distance_fraction <= 0 ||
+       *a.distance_fraction > 1)) {
+    return where + ".distance_fraction must be in (0, 1]";
+  }
+  return "";
+}
+
+bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0; }
+
+}  // namespace
+
+std::string CameraProfile::validate() const {
+  if (!std::isfinite(height.desired)) return "height.desired must be a finite number";
+  if (!finite_non_negative(distance.desired)) return "distance.desired must be >= 0";
+  if (!std::isfinite(orientation.desired) || orientation.desired < 0 ||
+      orientation.desired > 180) {
+    return "orientation.desired must be in [0, 180] degrees";
+  }
+  if (!finite_non_negative(height.weight)) return "height.weight must be >= 0";
+  if (!finite_non_negative(distance.weight)) return "distance.weight must be >= 0";
+  if (!finite_non_negative(orientation.weight)) return "orientation.weight must be >= 0";
+  if (!finite_non_negative(frame_coherence_weight)) return "frame_coherence.weight must be >= 0";
+  if (!finite_non_negative(visible_fraction_weight)) {
+    return "occlusion.visible_fraction_weight must be >= 0";
+  }
+  if (!finite_non_negative(look_at_weight)) return "occlusion.look_at_weight must be >= 0";
+  if (!finite_non_negative(clearance_radius)) return "clearance.radius must be >= 0";
+  if (!finite_non_negative(clearance_weight)) return "clearance.weight must be >= 0";
+  if (!std::isfinite(search_half_size) || search_half_size <= 0) {
+    return "search.half_size must be > 0";
+  }
+  if (auto e = check_adaptation(enclosed, "areas.enclosed"); !e.empty()) return e;
+  if (auto e = check_adaptation(semi_enclosed, "areas.semi-enclosed"); !e.empty()) return e;
+  return "";
+}
+
+Eigen::Vector3d ideal_camera_position(const CharacterState& character, double height,
+                                      double distance, double orientation_degrees) {
+  // The camera -> character direction makes the desired angle with the facing, so the camera
+  // sits at feet - distance x facing(yaw + angle), raised by the desired height.
+  const Eigen::Vector3d direction = facing_from_yaw(character.yaw + orientation_degrees);
+  return character.position - distance * direction + Eigen::Vector3d(0, height, 0);
+}
+
+}  // namespace sightline::camera

@@ -1,0 +1,91 @@
+// CameraProfile: what a good chase-camera shot is, as desired values and weights.
+//
+// Bourne & Sattar's "camera profile" (thesis section 3.1, tables 5-7): desired height of the
+// camera above the character's feet, desired horizontal distance, desired orientation (the
+// angle between the character's facing and the horizontal camera -> character direction;
+// 0 = right behind), and a weight for each, plus a weight on frame coherence (camera speed).
+// On top of those: the occlusion and clearance constraints' settings, the size of the search
+// box, how enclosed and semi-enclosed areas adapt the desired height and distance (thesis
+// section 3.2, table 9), and `extras`: constraint entries of any registered kind over the
+// camera variables, which is how a user adds a camera constraint without writing C++.
+//
+// Profiles come from YAML (profile_file.h); named presets ship in domains/camera/profiles/.
+// The in-class defaults below are the `thesis-default` preset.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "csp/spec.h"
+#include "domains/camera/trajectory.h"
+
+namespace sightline::camera {
+
+enum class AreaKind { kEnclosed, kSemiEnclosed };
+// "enclosed", "semi-enclosed".
+const char* to_string(AreaKind kind);
+std::optional<AreaKind> area_kind_from_string(const std::string& text);
+
+// One soft constraint with a desired value: cost = weight x |desired - actual|.
+struct DesiredValue {
+  double desired = 0;
+  double weight = 1;
+};
+
+// How an area of some kind adapts the desired height and distance while the character is in
+// it (restored when it leaves). An area only ever lowers them: a high hall leaves the profile
+// as it is, a low narrow room pulls the camera in and down.
+struct AreaAdaptation {
+  // desired height = min(profile height, area ceiling - ceiling_margin - character feet y),
+  // never below 0. Absent: the height is not adapted.
+  std::optional<double> ceiling_margin;
+  // desired distance = min(profile distance, distance_fraction x the area's smaller
+  // horizontal width). Absent: the distance is not adapted.
+  std::optional<double> distance_fraction;
+
+  bool operator==(const AreaAdaptation&) const = default;
+};
+
+struct CameraProfile {
+  std::string name = "thesis-default";
+  std::string description;
+
+  DesiredValue height{2.5, 1.0};        // metres above the feet; cost per metre
+  DesiredValue distance{4.0, 1.0};      // horizontal metres; cost per metre
+  DesiredValue orientation{0.0, 0.02};  // degrees in [0, 180]; cost per degree
+  double frame_coherence_weight = 0.002;  // cost per metre per second of camera speed
+
+  bool look_at_hard = true;              // the look-at point must be visible (hard) ...
+  double look_at_weight = 1.0;           // ... with this weight (also when soft)
+  double visible_fraction_weight = 2.0;  // soft: cost = weight x (1 - visible fraction)
+  double clearance_radius = 0.2;         // metres: the camera is a sphere this big
+  bool clearance_hard = true;
+  double clearance_weight = 1.0;         // per metre of penetration
+
+  // Half the edge of the cube the camera may move in per frame, centred on the last camera
+  // position: the domains of cam_x, cam_y, cam_z.
+  double search_half_size = 2.0;
+
+  AreaAdaptation enclosed{0.5, 0.35};
+  AreaAdaptation semi_enclosed{0.5, 0.5};
+
+  // Constraint entries ({kind: ..., scope: [cam_y], ...}) built through the kind registry
+  // over the variables cam_x, cam_y, cam_z and the frame parameters (see camera_problem.h).
+  std::vector<csp::Spec> extras;
+
+  const AreaAdaptation& adaptation(AreaKind kind) const {
+    return kind == AreaKind::kEnclosed ? enclosed : semi_enclosed;
+  }
+  // Empty when every field is in range; otherwise which field is wrong and why.
+  std::string validate() const;
+};
+
+// The camera position that satisfies height, distance and orientation exactly: on the circle
+// of the desired distance around the character, at the desired angle from behind (measured
+// through increasing yaw), at the desired height above the feet.
+Eigen::Vector3d ideal_camera_position(const CharacterState& character, double height,
+                                      double distance, double orientation_degrees);
+
+}  // namespace sightline::camera

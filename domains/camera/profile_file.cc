@@ -1,0 +1,187 @@
+#include "domains/camera/profile_file.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "csp/files/yaml_spec.h"
+#include "domains/camera/profile_presets.h"
+#include "domains/camera/spec_reading.h"
+
+namespace sightline::camera {
+namespace {
+
+using csp::Spec;
+using detail::read_in_range;
+using detail::read_non_negative;
+using detail::read_positive;
+
+// Presets may name a base themselves; this bounds the chain (and catches cycles).
+constexpr int kMaxBaseDepth = 8;
+
+CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int depth);
+
+void read_desired(const Spec* block, DesiredValue& value, const std::string& name,
+                  const std::string& desired_what, double lo, double hi) {
+  if (block == nullptr) return;
+  block->check_keys({"desired", "weight"});
+  if (const Spec* d = block->find("desired")) {
+    value.desired = read_in_range(*d, name + ".desired (" + desired_what + ")", lo, hi);
+  }
+  if (const Spec* w = block->find("weight")) {
+    value.weight = read_non_negative(*w, name + ".weight");
+  }
+}
+
+AreaAdaptation read_adaptation(const Spec& block, const std::string& kind) {
+  AreaAdaptation a;
+  if (block.is_null()) return a;  // "enclosed:" with nothing: no adaptation
+  block.check_keys({"ceiling_margin", "distance_fraction"});
+  if (const Spec* m = block.find("ceiling_margin")) {
+    a.ceiling_margin = read_non_negative(*m, "areas." + kind + ".ceiling_margin (metres)");
+  }
+  if (const Spec* f = block.find("distance_fraction")) {
+    a.distance_fraction = read_in_range(
+        *f, "areas." + kind + ".distance_fraction (of the area's smaller width)", 0, 1, true);
+  }
+  return a;
+}
+
+CameraProfile load_preset(const std::string& name, const csp::SourceLocation& where, int depth) {
+  const std::string canonical = name == "default" ? "thesis-default" : name;
+  for (const auto& preset : detail::preset_texts()) {
+    if (canonical == preset.name) {
+      return parse_onto(csp::parse_yaml(preset.yaml, std::string("preset ") + preset.name),
+                        preset.name, depth + 1);
+    }
+  }
+  std::string known;
+  for (const auto& n : preset_names()) known += (known.empty() ? "" : ", ") + n;
+  throw csp::InputError(where, "unknown camera profile '" + name + "' (presets: " + known +
+                                   "; or give a .yaml file or an inline mapping)");
+}
+
+CameraProfile base_profile(const Spec& spec, int depth) {
+  const Spec* base = spec.find("base");
+  if (base == nullptr) return CameraProfile{};
+  const std::string& name = base->as_string("a preset name for 'base'");
+  if (depth >= kMaxBaseDepth) base->fail("profile bases nest too deeply (a cycle?)");
+  return load_preset(name, base->where(), depth);
+}
+
+CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int depth) {
+  if (!spec.is_map()) spec.fail("expected a camera profile (a mapping), got " + spec.preview());
+  spec.check_keys({"name", "description", "base", "height", "distance", "orientation",
+                   "frame_coherence", "occlusion", "clearance", "search", "areas", "extras"});
+  CameraProfile p = base_profile(spec, depth);
+  p.name = spec.find("name") ? spec.at("name").as_string("a profile name") : fallback_name;
+  if (const Spec* d = spec.find("description")) p.description = d->as_string("a description");
+
+  read_desired(spec.find("height"), p.height, "height", "metres above the feet", -1e6, 1e6);
+  read_desired(spec.find("distance"), p.distance, "distance", "horizontal metres", 0, 1e6);
+  read_desired(spec.find("orientation"), p.orientation, "orientation", "degrees", 0, 180);
+  if (const Spec* fc = spec.find("frame_coherence")) {
+    fc->check_keys({"weight"});
+    if (const Spec* w = fc->find("weight")) {
+      p.frame_coherence_weight = read_non_negative(*w, "frame_coherence.weight");
+    }
+  }
+  if (const Spec* occ = spec.find("occlusion")) {
+    occ->check_keys({"look_at_hard", "look_at_weight", "visible_fraction_weight"});
+    if (const Spec* h = occ->find("look_at_hard")) p.look_at_hard = h->as_bool();
+    if (const Spec* w = occ->find("look_at_weight")) {
+      p.look_at_weight = read_non_negative(*w, "occlusion.look_at_weight");
+    }
+    if (const Spec* w = occ->find("visible_fraction_weight")) {
+      p.visible_fraction_weight = read_non_negative(*w, "occlusion.visible_fraction_weight");
+    }
+  }
+  if (const Spec* cl = spec.find("clearance")) {
+    cl->check_keys({"radius", "hard", "weight"});
+    if (const Spec* r = cl->find("radius")) {
+      p.clearance_radius = read_non_negative(*r, "clearance.radius (metres)");
+    }
+    if (const Spec* h = cl->find("hard")) p.clearance_hard = h->as_bool();
+    if (const Spec* w = cl->find("weight")) p.clearance_weight = read_non_negative(*w, "clearance.weight");
+  }
+  if (const Spec* search = spec.find("search")) {
+    search->check_keys({"half_size"});
+    if (const Spec* h = search->find("half_size")) {
+      p.search_half_size = read_positive(*h, "search.half_size (metres)");
+    }
+  }
+  if (const Spec* areas = spec.find("areas")) {
+    areas->check_keys({"enclosed", "semi-enclosed"});
+    if (const Spec* e = areas->find("enclosed")) p.enclosed = read_adaptation(*e, "enclosed");
+    if (const Spec* s = areas->find("semi-enclosed")) {
+      p.semi_enclosed = read_adaptation(*s, "semi-enclosed");
+    }
+  }
+  if (const Spec* extras = spec.find("extras")) {
+    for (const Spec& entry : extras->items("a list of constraint entries for 'extras'")) {
+      if (!entry.is_map()) {
+        entry.fail("expected a constraint entry {kind: ..., scope: [cam_y], ...}, got " +
+                   entry.preview());
+      }
+      p.extras.push_back(entry);
+    }
+  }
+  if (const std::string error = p.validate(); !error.empty()) spec.fail(error);
+  return p;
+}
+
+}  // namespace
+
+CameraProfile parse_profile(const csp::Spec& spec, const std::string& fallback_name) {
+  return parse_onto(spec, fallback_name, 0);
+}
+
+CameraProfile read_profile_file(const std::string& path) {
+  const std::string stem = std::filesystem::path(path).stem().string();
+  return parse_profile(csp::read_yaml_file(path), stem);
+}
+
+std::vector<std::string> preset_names() {
+  std::vector<std::string> names;
+  for (const auto& preset : detail::preset_texts()) names.emplace_back(preset.name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+bool is_preset(const std::string& name) {
+  if (name == "default") return true;
+  for (const auto& preset : detail::preset_texts()) {
+    if (name == preset.name) return true;
+  }
+  return false;
+}
+
+CameraProfile preset_profile(const std::string& name, const csp::SourceLocation& where) {
+  return load_preset(name, where, 0);
+}
+
+CameraProfile resolve_profile(const csp::Spec& value, const std::string& base_dir,
+                              std::string& source) {
+  if (value.is_map()) {
+    source = "inline";
+    return parse_profile(value, "inline");
+  }
+  const std::string& text = value.as_string("a profile: a preset name, a .yaml file or a mapping");
+  if (is_preset(text)) {
+    source = "preset " + std::string(text == "default" ? "thesis-default" : text);
+    return preset_profile(text, value.where());
+  }
+  const std::filesystem::path path(text);
+  const std::string ext = path.extension().string();
+  if (ext == ".yaml" || ext == ".yml") {
+    const std::filesystem::path full =
+        path.is_absolute() || base_dir.empty() ? path : std::filesystem::path(base_dir) / path;
+    if (!std::filesystem::exists(full)) {
+      value.fail("profile file '" + full.string() + "' does not exist");
+    }
+    source = "file " + full.string();
+    return read_profile_file(full.string());
+  }
+  return preset_profile(text, value.where());  // throws, listing the presets
+}
+
+}  // namespace sightline::camera

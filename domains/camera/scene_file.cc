@@ -1,0 +1,246 @@
+#include "domains/camera/scene_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "csp/files/yaml_spec.h"
+#include "domains/camera/camera_problem.h"
+#include "domains/camera/profile_file.h"
+#include "domains/camera/spec_reading.h"
+
+namespace sightline::camera {
+namespace {
+
+using csp::Spec;
+using detail::format_number;
+using detail::read_positive;
+using detail::read_vector3;
+
+std::string describe_box(const Aabb& b) {
+  auto v = [](const Eigen::Vector3d& p) {
+    return "[" + format_number(p.x()) + ", " + format_number(p.y()) + ", " +
+           format_number(p.z()) + "]";
+  };
+  return "min " + v(b.min) + " max " + v(b.max);
+}
+
+// min/max of a box entry, with min < max on every axis.
+Aabb read_box(const Spec& entry, const std::string& what) {
+  Aabb box{read_vector3(entry.at("min"), "the min corner of " + what),
+           read_vector3(entry.at("max"), "the max corner of " + what)};
+  static const char* kAxis[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    if (!(box.min[i] < box.max[i])) {
+      entry.fail("expected min < max on every axis for " + what + ", but on " + kAxis[i] +
+                 " min is " + format_number(box.min[i]) + " and max is " +
+                 format_number(box.max[i]) + " (boxes must have a positive size)");
+    }
+  }
+  return box;
+}
+
+// The list under `key`, empty when the key is absent or written with nothing after it.
+const std::vector<Spec>& optional_list(const Spec& spec, const std::string& key,
+                                       const std::string& what) {
+  static const std::vector<Spec> kNone;
+  const Spec* field = spec.find(key);
+  if (field == nullptr || field->is_null()) return kNone;
+  return field->items(what);
+}
+
+std::vector<SolidBox> read_solids(const Spec& spec) {
+  std::vector<SolidBox> solids;
+  std::map<std::string, int> names;  // name -> line of first use
+  for (const Spec& entry : optional_list(spec, "boxes", "a list of boxes")) {
+    if (!entry.is_map()) entry.fail("expected a box {name: ..., min: [x, y, z], max: [x, y, z]}");
+    entry.check_keys({"name", "min", "max"});
+    SolidBox box;
+    if (const Spec* n = entry.find("name")) box.name = n->as_string("a box name");
+    const std::string what = box.name.empty()
+                                 ? "box #" + std::to_string(solids.size() + 1)
+                                 : "box '" + box.name + "'";
+    box.box = read_box(entry, what);
+    box.where = entry.where();
+    if (!box.name.empty()) {
+      auto [it, fresh] = names.emplace(box.name, entry.where().line);
+      if (!fresh) {
+        entry.find("name")->fail("box name '" + box.name + "' is already used at line " +
+                                 std::to_string(it->second));
+      }
+    }
+    solids.push_back(std::move(box));
+  }
+  return solids;
+}
+
+std::vector<Area> read_areas(const Spec& spec) {
+  std::vector<Area> areas;
+  std::map<std::string, int> names;
+  for (const Spec& entry : optional_list(spec, "areas", "a list of areas")) {
+    if (!entry.is_map()) {
+      entry.fail("expected an area {name: ..., kind: enclosed, min: [x, y, z], max: [x, y, z]}");
+    }
+    entry.check_keys({"name", "kind", "min", "max"});
+    Area area;
+    area.name = entry.find("name") ? entry.at("name").as_string("an area name")
+                                   : "area #" + std::to_string(areas.size() + 1);
+    const Spec& kind = entry.at("kind");
+    const auto parsed = area_kind_from_string(kind.as_string("an area kind"));
+    if (!parsed) kind.fail("expected an area kind: enclosed or semi-enclosed, got " + kind.preview());
+    area.kind = *parsed;
+    area.box = read_box(entry, "area '" + area.name + "'");
+    area.where = entry.where();
+    auto [it, fresh] = names.emplace(area.name, entry.where().line);
+    if (!fresh) {
+      entry.fail("area name '" + area.name + "' is already used at line " +
+                 std::to_string(it->second));
+    }
+    areas.push_back(std::move(area));
+  }
+  return areas;
+}
+
+CharacterShape read_character(const Spec& spec) {
+  CharacterShape shape;
+  const Spec* block = spec.find("character");
+  if (block == nullptr || block->is_null()) return shape;
+  if (!block->is_map()) block->fail("expected the character {size: [x, y, z], look_at_height: h}");
+  block->check_keys({"size", "look_at_height"});
+  if (const Spec* size = block->find("size")) {
+    shape.size = read_vector3(*size, "the character's size");
+    if (!(shape.size.minCoeff() > 0)) {
+      size->fail("expected the character's size as 3 numbers > 0, got " + size->preview());
+    }
+  }
+  if (const Spec* h = block->find("look_at_height")) {
+    shape.look_at_height = read_positive(*h, "the look-at height (metres above the feet)");
+    if (shape.look_at_height > shape.size.y()) {
+      h->fail("expected the look-at height to be at most the character's height " +
+              format_number(shape.size.y()) + ", got " + h->preview());
+    }
+  } else if (shape.look_at_height > shape.size.y()) {
+    block->fail("the default look-at height 1.5 is above the character's height " +
+                format_number(shape.size.y()) + "; give look_at_height");
+  }
+  return shape;
+}
+
+std::vector<Keyframe> read_keyframes(const Spec& spec, std::vector<csp::SourceLocation>& where) {
+  const Spec& list = spec.at("trajectory");
+  std::vector<Keyframe> keyframes;
+  for (const Spec& entry : list.items("a list of keyframes {t, position, yaw}")) {
+    if (!entry.is_map()) entry.fail("expected a keyframe {t: s, position: [x, y, z], yaw: deg}");
+    entry.check_keys({"t", "position", "yaw"});
+    const std::string what = "keyframe #" + std::to_string(keyframes.size() + 1);
+    Keyframe k;
+    k.t = entry.at("t").as_number("the time of " + what + " (seconds)");
+    if (!keyframes.empty() && !(k.t > keyframes.back().t)) {
+      entry.at("t").fail("expected keyframe times to increase: " + what + " has t = " +
+                         format_number(k.t) + " but the keyframe before has t = " +
+                         format_number(keyframes.back().t));
+    }
+    k.position = read_vector3(entry.at("position"), "the position of " + what);
+    k.yaw = entry.at("yaw").as_number("the yaw of " + what + " (degrees)");
+    keyframes.push_back(k);
+    where.push_back(entry.where());
+  }
+  if (keyframes.empty()) list.fail("expected at least one keyframe in the trajectory");
+  return keyframes;
+}
+
+std::string solid_name(const Scene& scene, std::size_t i) {
+  const SolidBox& b = scene.solids()[i];
+  std::string name = b.name.empty() ? "box #" + std::to_string(i + 1) : "'" + b.name + "'";
+  return "solid box " + name + " (line " + std::to_string(b.where.line) + ")";
+}
+
+// The character's body must never be inside a solid box: at the keyframes (reported naming
+// the keyframe) and at every simulated frame in between.
+void check_trajectory(const Scene& scene, const std::vector<csp::SourceLocation>& where) {
+  const auto& keys = scene.trajectory().keyframes();
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const Aabb body = scene.character().body_at(keys[k].position);
+    if (auto hit = scene.solid_overlapping(body)) {
+      throw csp::InputError(where[k], "keyframe #" + std::to_string(k + 1) + " (t = " +
+                                          format_number(keys[k].t) +
+                                          ") puts the character's box (" + describe_box(body) +
+                                          ") inside " + solid_name(scene, *hit));
+    }
+  }
+  for (std::size_t f = 0; f < scene.frame_count(); ++f) {
+    const double t = scene.frame_time(f);
+    const CharacterState s = scene.character_at(t);
+    const Aabb body = scene.character().body_at(s.position);
+    if (auto hit = scene.solid_overlapping(body)) {
+      const std::size_t k = scene.trajectory().segment_at(t);
+      throw csp::InputError(
+          where[k], "between keyframe #" + std::to_string(k + 1) + " and keyframe #" +
+                        std::to_string(k + 2) + " the character's box passes through " +
+                        solid_name(scene, *hit) + " (first at frame " + std::to_string(f) +
+                        ", t = " + format_number(t) + ")");
+    }
+  }
+}
+
+}  // namespace
+
+Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
+  if (!spec.is_map()) spec.fail("expected a scene (a mapping with name, boxes, trajectory ...)");
+  spec.check_keys({"name", "description", "frame_rate", "character", "boxes", "areas",
+                   "trajectory", "camera"});
+  const std::string name = spec.at("name").as_string("the scene's name");
+  if (name.empty()) spec.at("name").fail("expected a non-empty scene name");
+  double frame_rate = 60;
+  if (const Spec* fr = spec.find("frame_rate")) {
+    frame_rate = read_positive(*fr, "the frame rate (frames per second)");
+  }
+  CharacterShape character = read_character(spec);
+  std::vector<SolidBox> solids = read_solids(spec);
+  std::vector<Area> areas = read_areas(spec);
+  std::vector<csp::SourceLocation> keyframe_where;
+  Trajectory trajectory(read_keyframes(spec, keyframe_where));
+  if (trajectory.duration() * frame_rate > kMaxSceneFrames) {
+    spec.at("trajectory").fail("the trajectory lasts " + format_number(trajectory.duration()) +
+                               " s, which at " + format_number(frame_rate) +
+                               " frames per second is more than " +
+                               format_number(kMaxSceneFrames) + " frames");
+  }
+
+  Scene scene(name, std::move(solids), std::move(areas), character, std::move(trajectory),
+              frame_rate);
+  if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
+
+  const Spec* camera = spec.find("camera");
+  if (camera != nullptr && !camera->is_null()) {
+    if (!camera->is_map()) camera->fail("expected camera settings {start: [x, y, z], profile: ...}");
+    camera->check_keys({"start", "profile"});
+    if (const Spec* p = camera->find("profile")) {
+      std::string source;
+      CameraProfile profile = resolve_profile(*p, base_dir, source);
+      scene.set_profile(std::move(profile), source);
+    }
+    if (const Spec* start = camera->find("start")) {
+      const Eigen::Vector3d p = read_vector3(*start, "the camera's start position");
+      if (auto nearest = scene.solid_tree().nearest(p, 0.0)) {
+        start->fail("the camera's start position is inside " + solid_name(scene, nearest->box));
+      }
+      scene.set_camera_start(p);
+    }
+  }
+  check_trajectory(scene, keyframe_where);
+  // Builds the camera problem once: a bad extra is reported now, with its line.
+  try {
+    CameraProblem check(scene);
+  } catch (const std::invalid_argument& e) {
+    spec.fail(e.what());
+  }
+  return scene;
+}
+
+Scene read_scene_file(const std::string& path) {
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  return parse_scene(csp::read_yaml_file(path), dir);
+}
+
+}  // namespace sightline::camera

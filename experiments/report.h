@@ -1,0 +1,34 @@
+// The suite report: OUT/report.html, one self-contained file that opens offline.
+//
+// It holds the summary tables (the same numbers as summary.md and results.csv) and, for each
+// scene of a camera suite: a top view and a side view per run side by side (the thesis'
+// auxiliary cameras: walls, areas, the character's path with facing arrows, the camera's
+// path with arrows, cuts circled, occluded frames dotted), what the main camera sees at a
+// few chosen frames (ray-cast PNGs), and plots over time of cost, visible fraction of the
+// body and camera speed. CSS is inline, pictures are inline SVG or base64 data: URIs; the
+// file references nothing outside itself.
+#pragma once
+
+#include <string>
+
+#include "experiments/suite.h"
+#include "experiments/suite_runner.h"
+
+namespace sightline::experiments {
+
+struct ReportOptions {
+  int view_width = 420;     // pixels, each top/side view
+  int camera_width = 240;   // pixels, each main-camera picture
+  int camera_height = 150;
+  int plot_width = 640, plot_height = 200;
+};
+
+// The HTML text. Reads each camera run's trace from out_dir/runs/<id>.trace.csv; a missing
+// or unreadable trace leaves that run's pictures out with a note.
+std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
+                        const std::string& out_dir, const ReportOptions& options = {});
+// Writes out_dir/report.html (write, then rename).
+void write_report(const Suite& suite, const SuiteOutcome& outcome, const std::string& out_dir,
+                  const ReportOptions& options = {});
+
+}  // namespace sightline::experiments

@@ -1,0 +1,353 @@
+#include "experiments/suite_runner.h"
+
+#include <unistd.h>
+
+#include <boost/asio/post.hpp>
+#include <boost/asio/thread_pool.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "experiments/camera_run.h"
+#include "experiments/suite_problem.h"
+#include "solvers/registry.h"
+
+namespace sightline::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& toy_metric_names() {
+  static const std::vector<std::string> names = {
+      "cost", "hard_violations", "feasible", "time_s", "evaluations", "iterations", "stop",
+      "independent_broken"};
+  return names;
+}
+
+std::string number_text(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+// Labels and notes go on one line of a key=value file and into CSV: no line breaks.
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+// Writes `text` to path + ".tmp" and renames it over `path`, so a reader sees either the
+// old file, no file, or the whole new one, never half of it.
+void write_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+}
+
+std::string run_file_text(const Suite& suite, const RunResult& r) {
+  std::ostringstream out;
+  out << "id=" << r.id << "\nkind=" << r.kind << "\nsubject=" << one_line(r.subject)
+      << "\nsolver=" << one_line(r.solver) << "\nprofile=" << one_line(r.profile)
+      << "\nseed=" << r.seed << "\nstatus=" << r.status << "\nnote=" << one_line(r.note)
+      << "\ndefinition=" << r.definition << '\n';
+  const std::vector<std::string> columns = metric_columns(suite);
+  for (std::size_t i = 0; i < columns.size() && i < r.values.size(); ++i) {
+    if (!r.values[i].empty()) out << "metric." << columns[i] << '=' << r.values[i] << '\n';
+  }
+  out << "end=1\n";  // a file without this line was cut short
+  return out.str();
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string clock_text(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%ld:%02ld", s / 60, s % 60);
+  return buffer;
+}
+
+RunResult skeleton(const Suite& suite, const SuiteRun& run) {
+  RunResult r;
+  r.id = run.id;
+  r.seed = run.seed;
+  r.definition = run.definition;
+  r.values.assign(metric_columns(suite).size(), "");
+  if (run.kind == SuiteRun::Kind::kCamera) {
+    r.kind = "camera";
+    r.subject = suite.scenes[run.subject].label;
+    r.solver = suite.camera_solvers[run.solver].label;
+    r.profile = suite.profiles[run.profile].label;
+  } else {
+    r.kind = "toy";
+    r.subject = suite.problems[run.subject].label;
+    r.solver = suite.toy_solvers[run.solver].label;
+    r.profile = "-";
+  }
+  return r;
+}
+
+void execute_camera(const Suite& suite, const SuiteRun& run, const std::string& trace_path,
+                    RunResult& r) {
+  const SuiteScene& scene = suite.scenes[run.subject];
+  const camera::CameraProfile profile = run_profile(suite, run);
+  camera::ChaseCameraOptions options = suite.camera_solvers[run.solver].options;
+  options.seed = run.seed;
+  const CameraRun camera_run = run_camera(*scene.scene, profile, options);
+  if (!trace_path.empty()) write_trace_csv(trace_path, camera_run.trace);
+  const std::vector<double> values = metric_values(camera_run.metrics);
+  for (std::size_t i = 0; i < values.size(); ++i) r.values[i] = number_text(values[i]);
+  r.status = "ok";
+}
+
+void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
+  const LoadedSuiteProblem loaded = load_suite_problem(suite.problems[run.subject]);
+  const SuiteToySolver& entry = suite.toy_solvers[run.solver];
+  const std::unique_ptr<solvers::Solver> solver =
+      solvers::SolverRegistry::global().create(entry.name, entry.options);
+  if (const std::string why = solver->unsuitable_reason(*loaded.problem); !why.empty()) {
+    r.status = "skipped";
+    r.note = why;
+    return;
+  }
+  solvers::SolveContext context;
+  context.seed = run.seed;
+  context.limits = suite.toy_limits;
+  context.want_breakdown = false;
+  const solvers::SolverResult result =
+      solver->solve(*loaded.problem, loaded.problem->default_assignment(), context);
+  const std::size_t first = suite.scenes.empty() ? 0 : metric_names().size();
+  const std::vector<std::string> values = {
+      number_text(result.score.soft),
+      number_text(static_cast<double>(result.score.hard)),
+      result.feasible() ? "1" : "0",
+      number_text(result.wall_seconds),
+      std::to_string(result.evaluations),
+      std::to_string(result.iterations),
+      std::string(solvers::to_string(result.stop)),
+      loaded.count_broken ? std::to_string(loaded.count_broken(result.best)) : std::string()};
+  for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
+  r.status = "ok";
+  if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
+}
+
+// Progress on stderr, one line rewritten in place.
+class Progress {
+ public:
+  Progress(bool enabled, std::size_t total, std::size_t reused)
+      : enabled_(enabled), total_(total), done_(reused), reused_(reused),
+        start_(std::chrono::steady_clock::now()) {
+    show();
+  }
+  void finished_one() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++done_;
+    show();
+  }
+  void end() {
+    if (enabled_) std::cerr << '\n';
+  }
+
+ private:
+  void show() {
+    if (!enabled_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const std::size_t ran = done_ - reused_;
+    std::string left = "?";
+    if (ran > 0) left = clock_text(elapsed / ran * (total_ - done_));
+    std::cerr << "\rruns " << done_ << '/' << total_ << " (" << reused_ << " reused), elapsed "
+              << clock_text(elapsed) << ", about " << left << " left   " << std::flush;
+  }
+  bool enabled_;
+  std::size_t total_, done_, reused_;
+  std::chrono::steady_clock::time_point start_;
+  std::mutex mutex_;
+};
+
+}  // namespace
+
+std::vector<std::string> metric_columns(const Suite& suite) {
+  std::vector<std::string> columns;
+  if (!suite.scenes.empty()) columns = metric_names();
+  if (!suite.problems.empty()) {
+    columns.insert(columns.end(), toy_metric_names().begin(), toy_metric_names().end());
+  }
+  return columns;
+}
+
+std::vector<std::string> result_columns(const Suite& suite) {
+  std::vector<std::string> columns = {"id", "kind", suite.scenes.empty() ? "problem" : "scene",
+                                      "solver", "profile", "seed", "status"};
+  for (const std::string& m : metric_columns(suite)) columns.push_back(m);
+  columns.push_back("note");
+  return columns;
+}
+
+bool is_timing_column(const std::string& column) {
+  return column == "solve_us_p50" || column == "solve_us_p99" || column == "solve_us_max" ||
+         column == "time_s";
+}
+
+RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path) {
+  RunResult r = skeleton(suite, run);
+  try {
+    if (run.kind == SuiteRun::Kind::kCamera) {
+      execute_camera(suite, run, trace_path, r);
+    } else {
+      execute_toy(suite, run, r);
+    }
+  } catch (const std::exception& e) {
+    r.status = "failed";
+    r.note = one_line(e.what());
+  }
+  return r;
+}
+
+bool read_run_file(const std::string& path, RunResult& r) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::map<std::string, std::string> fields;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t eq = line.find('=');
+    if (eq == std::string::npos) return false;
+    fields[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  if (fields["end"] != "1") return false;
+  for (const char* key : {"id", "kind", "status", "definition", "seed"}) {
+    if (!fields.count(key)) return false;
+  }
+  r.id = fields["id"];
+  r.kind = fields["kind"];
+  r.subject = fields["subject"];
+  r.solver = fields["solver"];
+  r.profile = fields["profile"];
+  r.status = fields["status"];
+  r.note = fields["note"];
+  r.definition = fields["definition"];
+  try {
+    r.seed = std::stoull(fields["seed"]);
+  } catch (const std::exception&) {
+    return false;
+  }
+  r.values.clear();
+  for (const auto& [key, value] : fields) {
+    if (key.rfind("metric.", 0) == 0) r.values.push_back(key.substr(7) + "=" + value);
+  }
+  return true;
+}
+
+SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path out(options.out_dir);
+  const fs::path runs_dir = out / "runs";
+  std::error_code ec;
+  fs::create_directories(runs_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + runs_dir.string() + ": " + ec.message());
+
+  const std::vector<SuiteRun> runs = expand_runs(suite);
+  const std::vector<std::string> columns = metric_columns(suite);
+  SuiteOutcome outcome;
+  outcome.total = runs.size();
+  std::vector<RunResult> results(runs.size());
+  std::vector<char> finished(runs.size(), 0);
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    RunResult stored;
+    if (read_run_file((runs_dir / (runs[i].id + ".result")).string(), stored) &&
+        stored.definition == runs[i].definition) {
+      // Metric values were stored by name: put them back in this suite's column order.
+      RunResult r = skeleton(suite, runs[i]);
+      r.status = stored.status;
+      r.note = stored.note;
+      for (const std::string& kv : stored.values) {
+        const std::size_t eq = kv.find('=');
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+          if (columns[c] == kv.substr(0, eq)) r.values[c] = kv.substr(eq + 1);
+        }
+      }
+      results[i] = std::move(r);
+      finished[i] = 1;
+      ++outcome.reused;
+    } else {
+      pending.push_back(i);
+    }
+  }
+  if (options.max_new_runs > 0 && pending.size() > options.max_new_runs) {
+    pending.resize(options.max_new_runs);
+  }
+
+  unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  Progress progress(options.progress && ::isatty(STDERR_FILENO), runs.size(), outcome.reused);
+  std::mutex error_mutex;
+  std::string write_error;
+  {
+    boost::asio::thread_pool pool(jobs);
+    for (std::size_t i : pending) {
+      boost::asio::post(pool, [&, i] {
+        const std::string base = (runs_dir / runs[i].id).string();
+        RunResult r = execute_run(suite, runs[i], base + ".trace.csv");
+        try {
+          write_atomically(base + ".result", run_file_text(suite, r));
+        } catch (const std::exception& e) {
+          std::lock_guard<std::mutex> lock(error_mutex);
+          write_error = e.what();
+        }
+        results[i] = std::move(r);
+        finished[i] = 1;
+        progress.finished_one();
+      });
+    }
+    pool.join();
+  }
+  progress.end();
+  if (!write_error.empty()) throw std::runtime_error(write_error);
+  outcome.ran = pending.size();
+
+  // results.csv: finished runs in the suite's order.
+  std::ostringstream csv;
+  const std::vector<std::string> header = result_columns(suite);
+  for (std::size_t c = 0; c < header.size(); ++c) csv << (c ? "," : "") << header[c];
+  csv << '\n';
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!finished[i]) continue;
+    const RunResult& r = results[i];
+    if (r.status == "failed") ++outcome.failed;
+    csv << csv_field(r.id) << ',' << r.kind << ',' << csv_field(r.subject) << ','
+        << csv_field(r.solver) << ',' << csv_field(r.profile) << ',' << r.seed << ','
+        << r.status;
+    for (const std::string& v : r.values) csv << ',' << csv_field(v);
+    csv << ',' << csv_field(r.note) << '\n';
+    outcome.results.push_back(r);
+  }
+  write_atomically((out / "results.csv").string(), csv.str());
+  outcome.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_atomically((out / "summary.md").string(), markdown_summary(suite, outcome));
+  return outcome;
+}
+
+}  // namespace sightline::experiments

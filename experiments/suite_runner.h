@@ -1,0 +1,76 @@
+// SuiteRunner: runs every combination of a suite in parallel, resumably, and tabulates them.
+//
+// Runs are independent, so they go to a Boost.Asio thread_pool, one per core (or --jobs).
+// Each finished run leaves two files in OUT/runs/: its trace (camera runs; FORMATS.md) and a
+// one-row result file, both written to a ".tmp" name first and renamed, the result last. A
+// run counts as finished only when its result file exists, parses, and names the same
+// definition (so a half-written result, a stray .tmp, or an edited suite entry is redone);
+// a second invocation therefore skips what is done and redoes nothing twice.
+// When all runs are in, OUT/results.csv (one row per run, in the suite's fixed order) and
+// OUT/summary.md are written, again by write-then-rename.
+//
+// Progress goes to stderr, and only when stderr is a terminal: runs done/total, elapsed, an
+// estimate of the time left.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "experiments/suite.h"
+
+namespace sightline::experiments {
+
+// One row of results.csv. `values` line up with result_columns(suite).
+struct RunResult {
+  std::string id;
+  std::string kind;     // "camera" or "toy"
+  std::string subject;  // scene or problem label
+  std::string solver;
+  std::string profile;  // "-" for toy runs
+  std::uint64_t seed = 1;
+  std::string status;   // "ok", "skipped" (solver unsuitable), "failed" (an exception)
+  std::vector<std::string> values;  // metric values as text ("" where not applicable)
+  std::string note;     // why skipped or failed; the definition is kept in the run file
+  std::string definition;
+};
+
+struct RunnerOptions {
+  std::string out_dir;
+  unsigned jobs = 0;             // 0: one per hardware thread
+  std::size_t max_new_runs = 0;  // > 0: stop after starting this many unfinished runs
+  bool progress = true;          // shown only if stderr is also a terminal
+};
+
+struct SuiteOutcome {
+  std::size_t total = 0;     // combinations in the suite
+  std::size_t reused = 0;    // finished by an earlier invocation
+  std::size_t ran = 0;       // done by this one
+  std::size_t failed = 0;    // status "failed" (this invocation or earlier)
+  std::vector<RunResult> results;  // every finished run, in the suite's order
+  double seconds = 0;
+};
+
+// Metric columns for this suite: the camera metrics if it has camera runs, then the toy
+// metrics if it has toy runs.
+std::vector<std::string> metric_columns(const Suite& suite);
+// All results.csv columns: id, kind, scene (or problem), solver, profile, seed, status,
+// the metric columns, note.
+std::vector<std::string> result_columns(const Suite& suite);
+// Names of the timing columns (they differ between repeats of the same run).
+bool is_timing_column(const std::string& column);
+
+// Runs one combination now (no files). Exceptions become status "failed".
+RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path);
+
+// Runs the suite into options.out_dir (created if needed). Throws std::runtime_error if the
+// directory cannot be written.
+SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options);
+
+// The Markdown summary: a per-solver table over all scenes, then one row per run.
+std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome);
+
+// Reads a result file written by the runner; false when missing, half-written or malformed.
+bool read_run_file(const std::string& path, RunResult& result);
+
+}  // namespace sightline::experiments

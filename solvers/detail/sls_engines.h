@@ -1,0 +1,25 @@
+// The two search loops behind SlsSolver (see solvers/sls.h for what they do and why):
+// min-conflicts with swaps for discrete problems, random-neighbourhood search for continuous
+// and mixed ones. Each fills result.best, evaluations, iterations, stop and message; the
+// caller scores the result (finish_result).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "solvers/sls.h"
+
+namespace sightline::solvers::detail {
+
+void run_discrete_sls(const csp::Problem& problem, std::span<const double> start,
+                      const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
+                      SolverResult& result);
+
+// `current` and `candidate` are scratch buffers kept by the caller between solves.
+void run_continuous_sls(const csp::Problem& problem, std::span<const double> start,
+                        const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
+                        SolverResult& result, std::vector<double>& current,
+                        std::vector<double>& candidate);
+
+}  // namespace sightline::solvers::detail

@@ -1,0 +1,267 @@
+// The `sightline` program end to end: it is run as a user would run it (through the shell)
+// and judged on its exit status and what it prints. Bad input must give a non-zero status and
+// a message naming the file and line or listing the valid names, never a crash.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Outcome {
+  int status = -1;     // exit status; -1 when the program did not exit normally (a crash)
+  std::string output;  // stdout and stderr together
+};
+
+Outcome run(const std::string& arguments) {
+  const std::string command = std::string("'") + SIGHTLINE_BINARY + "' " + arguments + " 2>&1";
+  Outcome r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
+    r.output.append(buffer, n);
+  const int raw = pclose(pipe);
+  if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
+  return r;
+}
+
+std::string example(const std::string& name) {
+  return std::string(SIGHTLINE_SOURCE_DIR) + "/examples/graphs/" + name;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The numbers on the last non-empty line of `output` (where --print-solution - writes).
+std::vector<int> last_line_numbers(const std::string& output) {
+  std::istringstream lines(output);
+  std::string line, last;
+  while (std::getline(lines, line)) {
+    if (!line.empty()) last = line;
+  }
+  std::istringstream numbers(last);
+  std::vector<int> out;
+  for (int x; numbers >> x;) out.push_back(x);
+  return out;
+}
+
+// A scratch file in the test's temporary directory, removed at the end of the test.
+class TempFile {
+ public:
+  TempFile(const std::string& name, const std::string& text)
+      : path_(std::filesystem::temp_directory_path() /
+              ("sightline_cli_test_" + std::to_string(::getpid()) + "_" + name)) {
+    std::ofstream(path_) << text;
+  }
+  ~TempFile() { std::filesystem::remove(path_); }
+  std::string path() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+TEST(SightlineCli, ListsTheGridSlsAndSlidingOctreeSolversWithTheirOptions) {
+  const Outcome r = run("solvers");
+  EXPECT_EQ(r.status, 0) << r.output;
+  for (const char* name : {"grid:", "sls:", "sliding-octree:", "max_points", "passes"}) {
+    EXPECT_TRUE(contains(r.output, name)) << name << " missing from:\n" << r.output;
+  }
+}
+
+TEST(SightlineCli, ListsTheConstraintKinds) {
+  const Outcome r = run("kinds");
+  EXPECT_EQ(r.status, 0) << r.output;
+  for (const char* kind : {"not_equal", "all_different", "linear", "expression"}) {
+    EXPECT_TRUE(contains(r.output, kind)) << kind;
+  }
+}
+
+TEST(SightlineCli, SolvesEightQueensAndPrintsAValidPlacement) {
+  const Outcome r = run("nqueens 8 --solver sls --seed 4 --print-solution -");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "independent check: 0 attacking pairs")) << r.output;
+  // The solution is the last line: the row of each column's queen. Check it here, sharing
+  // nothing with the program: a permutation with no two queens on a diagonal.
+  const std::vector<int> rows = last_line_numbers(r.output);
+  ASSERT_EQ(rows.size(), 8u) << r.output;
+  EXPECT_EQ(std::set<int>(rows.begin(), rows.end()).size(), 8u);
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_GE(rows[i], 0);
+    EXPECT_LT(rows[i], 8);
+    for (int j = i + 1; j < 8; ++j) EXPECT_NE(std::abs(rows[i] - rows[j]), j - i) << i << "," << j;
+  }
+}
+
+TEST(SightlineCli, ColoursAustraliaAndWritesTheSolutionFile) {
+  const TempFile out("australia.sol", "");
+  const Outcome r = run("colour '" + example("australia.yaml") +
+                        "' --colours 3 --solver grid --print-solution '" + out.path() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "0 conflicting edges")) << r.output;
+  std::ifstream in(out.path());
+  std::vector<int> colours;
+  for (int c; in >> c;) colours.push_back(c);
+  ASSERT_EQ(colours.size(), 7u);
+  // WA NT SA Q NSW V T: the WA-NT-SA triangle takes three colours, Q = WA, NSW = NT, V = WA.
+  EXPECT_NE(colours[0], colours[1]);
+  EXPECT_NE(colours[0], colours[2]);
+  EXPECT_NE(colours[1], colours[2]);
+  EXPECT_EQ(colours[3], colours[0]);
+  EXPECT_EQ(colours[4], colours[1]);
+  EXPECT_EQ(colours[5], colours[0]);
+}
+
+TEST(SightlineCli, SolvesADimacsGraphGivenTheNumberOfColours) {
+  const Outcome r = run("solve '" + example("myciel3.col") + "' --colours 3 --solver grid");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "grid: cost 1 feasible")) << r.output;
+  EXPECT_TRUE(contains(r.output, "violated constraints: 1 of 20")) << r.output;
+}
+
+TEST(SightlineCli, SolvesAToulbar2WcspFileAndPrintsValueIndices) {
+  // Two variables of two values; the tuple (0, 0) costs 3, everything else is free. The
+  // optimum is 0 at any of the other three tuples.
+  const TempFile wcsp("tiny.wcsp", "tiny 2 2 1 10\n2 2\n2 0 1 0 1\n0 0 3\n");
+  const Outcome r = run("solve '" + wcsp.path() + "' --solver grid --print-solution -");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "grid: cost 0 feasible")) << r.output;
+  const std::vector<int> values = last_line_numbers(r.output);
+  ASSERT_EQ(values.size(), 2u) << r.output;
+  EXPECT_TRUE(values[0] == 0 || values[0] == 1);
+  EXPECT_TRUE(values[1] == 0 || values[1] == 1);
+  EXPECT_FALSE(values[0] == 0 && values[1] == 0) << "the costly tuple was printed";
+}
+
+TEST(SightlineCli, RefusesANumberOfColoursForAFileThatIsNotAGraph) {
+  const TempFile wcsp("tiny.wcsp", "tiny 1 2 0 10\n2\n");
+  const Outcome r = run("solve '" + wcsp.path() + "' --colours 3 --solver grid");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, wcsp.path() + ": --colours applies to DIMACS graphs")) << r.output;
+}
+
+TEST(SightlineCli, AsksForTheNumberOfColoursOfADimacsGraph) {
+  const Outcome r = run("solve '" + example("myciel3.col") + "' --solver sls");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "myciel3.col")) << r.output;
+  EXPECT_TRUE(contains(r.output, "--colours")) << r.output;
+}
+
+TEST(SightlineCli, NamesTheFileAndLineOfMalformedYaml) {
+  const TempFile bad("bad.yaml", "name: broken\nvariables:\n  - {names: [a, b], range: [0, 3]\n");
+  const Outcome r = run("solve '" + bad.path() + "' --solver grid");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "sightline: " + bad.path() + ":")) << r.output;
+}
+
+TEST(SightlineCli, NamesTheFileLineAndColumnOfABadDimacsEdge) {
+  const TempFile bad("bad.col", "c comment\np edge 3 2\ne 1 2\ne 2 9\n");
+  const Outcome r = run("colour '" + bad.path() + "' --colours 3 --solver sls");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, bad.path() + ":4:5: vertex 9 is out of range")) << r.output;
+}
+
+TEST(SightlineCli, NamesAMissingFile) {
+  const Outcome r = run("solve /nonexistent/problem.yaml --solver sls");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "/nonexistent/problem.yaml")) << r.output;
+  const Outcome g = run("colour /nonexistent/graph.col --colours 3 --solver sls");
+  EXPECT_EQ(g.status, 2) << g.output;
+  EXPECT_TRUE(contains(g.output, "/nonexistent/graph.col")) << g.output;
+}
+
+TEST(SightlineCli, RefusesAnUnknownFileType) {
+  const Outcome r = run("solve problem.txt --solver sls");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "problem.txt")) << r.output;
+  EXPECT_TRUE(contains(r.output, ".yaml")) << r.output;
+}
+
+TEST(SightlineCli, ListsTheKnownSolversForAnUnknownOne) {
+  const Outcome r = run("nqueens 8 --solver simulated-annealing");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "simulated-annealing")) << r.output;
+  for (const char* name : {"grid", "sls", "sliding-octree"}) {
+    EXPECT_TRUE(contains(r.output, name)) << r.output;
+  }
+}
+
+TEST(SightlineCli, ListsTheValidOptionsForAnUnknownOne) {
+  const Outcome r = run("nqueens 8 --solver grid --set max_pionts=10");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "max_pionts")) << r.output;
+  EXPECT_TRUE(contains(r.output, "max_points")) << r.output;
+}
+
+TEST(SightlineCli, RefusesNotANumberWhereANumberIsExpected) {
+  const Outcome limit = run("nqueens 8 --solver sls --time-limit nan");
+  EXPECT_EQ(limit.status, 2) << limit.output;
+  EXPECT_TRUE(contains(limit.output, "--time-limit")) << limit.output;
+  const Outcome option = run("nqueens 8 --solver sls --set walk_probability=nan");
+  EXPECT_EQ(option.status, 2) << option.output;
+  EXPECT_TRUE(contains(option.output, "walk_probability")) << option.output;
+  const TempFile bad("nan.yaml",
+                     "name: nan\nvariables:\n  - {name: x, int: [0, 3]}\nconstraints:\n"
+                     "  - {kind: linear, scope: [x], coefficients: [1], op: '<=', rhs: .nan}\n");
+  const Outcome file = run("solve '" + bad.path() + "' --solver grid");
+  EXPECT_EQ(file.status, 2) << file.output;
+  EXPECT_TRUE(contains(file.output, bad.path() + ":5")) << file.output;
+}
+
+TEST(SightlineCli, RefusesASettingWithoutAnEqualsSign) {
+  const Outcome r = run("nqueens 8 --solver sls --set restarts");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "key=value")) << r.output;
+}
+
+TEST(SightlineCli, RefusesANegativeSeedOrLimitInsteadOfWrappingIt) {
+  for (const char* option : {"--seed -1", "--max-evaluations -5", "--seed 18446744073709551616"}) {
+    const Outcome r = run(std::string("nqueens 8 --solver sls ") + option);
+    EXPECT_EQ(r.status, 2) << option << ": " << r.output;
+    EXPECT_TRUE(contains(r.output, "sightline: --")) << r.output;
+  }
+}
+
+TEST(SightlineCli, TakesOneValuePerSetSoTheFileMayFollow) {
+  const Outcome r =
+      run("solve --set max_points=1000 '" + example("australia.yaml") + "' --solver grid");
+  // australia.yaml is a graph, not a problem file: the error must name it, which shows it
+  // reached the file argument rather than being swallowed by --set.
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "australia.yaml")) << r.output;
+  const Outcome ok = run("solve --set max_points=1000000 '" + example("myciel3.col") +
+                         "' --colours 3 --solver grid");
+  EXPECT_EQ(ok.status, 0) << ok.output;
+}
+
+TEST(SightlineCli, ExplainsUsageErrors) {
+  EXPECT_EQ(run("").status, 2);
+  EXPECT_EQ(run("no-such-command").status, 2);
+  EXPECT_EQ(run("nqueens").status, 2);
+  EXPECT_EQ(run("nqueens 0 --solver sls").status, 2);
+  EXPECT_EQ(run("--help").status, 0);
+}
+
+// Restricted to three solvers so the test's duration does not depend on every solver's.
+TEST(SightlineCli, CompareRunsTheChosenSolversOnEveryProblem) {
+  const Outcome r = run("compare --time-limit 5 --solvers grid,sls,sliding-octree");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* part : {"1000-queens", "australia, 3 colours", "myciel3, 3 colours", "| grid",
+                           "| sls", "| sliding-octree", "skipped"}) {
+    EXPECT_TRUE(contains(r.output, part)) << part << " missing from:\n" << r.output;
+  }
+  EXPECT_FALSE(contains(r.output, "MISMATCH")) << r.output;
+  const Outcome bad = run("compare --solvers grid,tabu");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_TRUE(contains(bad.output, "unknown solver 'tabu'")) << bad.output;
+}
+
+}  // namespace

@@ -1,0 +1,88 @@
+// The per-frame path of the camera allocates nothing: re-parameterising the problem for a new
+// frame, scoring candidate positions (every constraint, including occlusion through the BVH
+// and a profile's `expression` extra), exact gradients and the scene's queries.
+//
+// This executable replaces the global operator new with one that counts, which is why it is
+// a test program of its own.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "domains/camera/camera_problem.h"
+#include "domains/camera/constraints/occlusion.h"
+#include "domains/camera/scene_file.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace sightline::camera {
+namespace {
+
+TEST(CameraFramePath, AllocatesNothing) {
+  // A scene with walls, a door, an enclosed area and a profile extra (an expression).
+  const Scene scene =
+      read_scene_file(std::string(SIGHTLINE_SOURCE_DIR) + "/examples/scenes/room-with-door.yaml");
+  CameraProblem cp(scene);
+  ASSERT_EQ(cp.ids().extras.size(), 1u);
+  const csp::Problem& problem = cp.problem();
+
+  std::vector<double> values(3);
+  std::vector<double> gradient(3);
+  double total = 0;
+  Eigen::Vector3d camera = scene.start_camera_position();
+  auto one_frame = [&](std::size_t frame) {
+    const CharacterState s = scene.character_at(scene.frame_time(frame));
+    cp.set_frame(s, camera, 1.0 / scene.frame_rate());
+    // Score the eight corners of a small cube around the ideal position, as an octree would.
+    const Eigen::Vector3d ideal = cp.ideal_position();
+    for (int k = 0; k < 8; ++k) {
+      values[0] = ideal.x() + ((k & 1) ? 0.3 : -0.3);
+      values[1] = ideal.y() + ((k & 2) ? 0.3 : -0.3);
+      values[2] = ideal.z() + ((k & 4) ? 0.3 : -0.3);
+      total += problem.score(values).soft;
+    }
+    // Exact gradients (the camera's own constraints). The expression extra has none: its
+    // gradient is csp::Constraint's finite-difference default, outside this domain.
+    for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
+      const csp::Constraint& c = problem.constraint(id);
+      if (!c.has_exact_gradient()) continue;
+      total += c.violation_and_gradient(values, std::span<double>(gradient.data(), c.scope().size()));
+    }
+    const Eigen::Vector3d look = scene.character().look_at(s.position);
+    total += scene.line_of_sight(ideal, look);
+    total += scene.first_hit(ideal, look).has_value();
+    total += scene.clearance(ideal, 0.2);
+    total += scene.innermost_area(s.position).value_or(0);
+    total += visible_fraction(scene, ideal, scene.character().body_at(s.position));
+    camera = ideal;
+  };
+
+  one_frame(0);  // anything lazily set up happens here
+  const long before = g_allocations.load();
+  for (std::size_t f = 1; f < scene.frame_count(); ++f) one_frame(f);
+  const long after = g_allocations.load();
+  EXPECT_EQ(after - before, 0) << "allocations over " << scene.frame_count() - 1 << " frames";
+  EXPECT_TRUE(std::isfinite(total));
+  // The counter itself works.
+  const long probe = g_allocations.load();
+  auto* leak_check = new std::vector<int>(10);
+  delete leak_check;
+  EXPECT_GE(g_allocations.load() - probe, 2);
+}
+
+}  // namespace
+}  // namespace sightline::camera

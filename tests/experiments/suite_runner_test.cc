@@ -1,0 +1,176 @@
+// The suite runner: resumes without redoing finished runs, never takes a half-written result
+// for a finished one, produces the same results.csv as an uninterrupted run, and writes a
+// self-contained report.
+#include "experiments/suite_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/report.h"
+#include "tests/experiments/suite_test_files.h"
+
+namespace sightline::experiments {
+namespace {
+
+using testing::ScratchDir;
+namespace fs = std::filesystem;
+
+// 2 scenes x 2 camera solvers, plus 2 toy problems x 2 solvers: 8 runs.
+const char* kTinySuite = R"(name: tiny
+camera:
+  scenes: [scenes/*.yaml]
+  solvers:
+    - occlusion-octree
+    - {label: bourne-published, solver: bourne-octree, controller: {visibility_guard: false},
+       area_adaptation: false}
+problems:
+  instances: [{nqueens: [6, 8]}]
+  solvers: [sls, bnb]
+)";
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// results.csv with the timing columns blanked: they measure the machine, not the run.
+std::string without_timing(const Suite& suite, const std::string& csv) {
+  const std::vector<std::string> columns = result_columns(suite);
+  std::istringstream in(csv);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::string field;
+    std::size_t c = 0;
+    bool quoted = false;
+    for (char ch : line + ",") {
+      if (ch == '"') quoted = !quoted;
+      if (ch == ',' && !quoted) {
+        out += (c < columns.size() && is_timing_column(columns[c]) ? "<t>" : field) + ",";
+        field.clear();
+        ++c;
+      } else {
+        field += ch;
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+RunnerOptions options_for(const std::string& out, std::size_t max_new_runs = 0) {
+  RunnerOptions o;
+  o.out_dir = out;
+  o.jobs = 2;
+  o.max_new_runs = max_new_runs;
+  o.progress = false;
+  return o;
+}
+
+TEST(SuiteRunner, ResumesWithoutRedoingFinishedRunsAndMatchesAFreshRun) {
+  ScratchDir dir("runner-resume");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
+  const std::size_t total = expand_runs(suite).size();
+  ASSERT_EQ(total, 8u);
+
+  // Interrupted after 3 runs...
+  const SuiteOutcome first = run_suite(suite, options_for(dir.path("out"), 3));
+  EXPECT_EQ(first.ran, 3u);
+  EXPECT_EQ(first.reused, 0u);
+  EXPECT_EQ(first.results.size(), 3u);
+  // ... started again: the 3 are kept, the other 5 done, none twice.
+  const SuiteOutcome second = run_suite(suite, options_for(dir.path("out")));
+  EXPECT_EQ(second.reused, 3u);
+  EXPECT_EQ(second.ran, 5u);
+  EXPECT_EQ(second.results.size(), total);
+  EXPECT_EQ(second.failed, 0u);
+  // A third invocation has nothing left to do.
+  const SuiteOutcome third = run_suite(suite, options_for(dir.path("out")));
+  EXPECT_EQ(third.ran, 0u);
+  EXPECT_EQ(third.reused, total);
+  const std::string resumed = read_text(dir.path("out/results.csv"));
+
+  const SuiteOutcome fresh = run_suite(suite, options_for(dir.path("fresh")));
+  EXPECT_EQ(fresh.ran, total);
+  const std::string uninterrupted = read_text(dir.path("fresh/results.csv"));
+  EXPECT_EQ(without_timing(suite, resumed), without_timing(suite, uninterrupted));
+  // One header and one row per run.
+  EXPECT_EQ(std::count(resumed.begin(), resumed.end(), '\n'), static_cast<long>(total + 1));
+}
+
+TEST(SuiteRunner, AHalfWrittenOrStrayResultIsRedone) {
+  ScratchDir dir("runner-partial");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
+  const std::vector<SuiteRun> runs = expand_runs(suite);
+  run_suite(suite, options_for(dir.path("out")));
+  const fs::path run_dir = dir.path("out/runs");
+
+  // Run 0: only a stray .tmp left, as if killed before the rename.
+  const fs::path result0 = run_dir / (runs[0].id + ".result");
+  fs::rename(result0, run_dir / (runs[0].id + ".result.tmp"));
+  // Run 5: the file cut short (no end marker), as if written without the rename.
+  const fs::path result5 = run_dir / (runs[5].id + ".result");
+  std::string text = read_text(result5.string());
+  std::ofstream(result5, std::ios::trunc) << text.substr(0, text.size() / 2);
+
+  const SuiteOutcome again = run_suite(suite, options_for(dir.path("out")));
+  EXPECT_EQ(again.ran, 2u);
+  EXPECT_EQ(again.reused, runs.size() - 2);
+  RunResult r;
+  EXPECT_TRUE(read_run_file(result0.string(), r));
+  EXPECT_TRUE(read_run_file(result5.string(), r));
+}
+
+TEST(SuiteRunner, ToyRunsReportCostFeasibilityAndTheIndependentCheck) {
+  ScratchDir dir("runner-toy");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: toy
+problems:
+  instances: [{nqueens: [3, 8]}]
+  solvers: [bnb]
+)"));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  ASSERT_EQ(outcome.results.size(), 2u);
+  const std::vector<std::string> columns = metric_columns(suite);
+  auto value = [&](const RunResult& r, const std::string& name) {
+    return r.values[std::find(columns.begin(), columns.end(), name) - columns.begin()];
+  };
+  // 3-queens has no solution: its best assignment breaks a hard constraint, and the
+  // independent count of attacking pairs agrees that queens attack.
+  EXPECT_EQ(value(outcome.results[0], "feasible"), "0");
+  EXPECT_NE(value(outcome.results[0], "hard_violations"), "0");
+  EXPECT_NE(value(outcome.results[0], "independent_broken"), "0");
+  // 8-queens has solutions.
+  EXPECT_EQ(value(outcome.results[1], "hard_violations"), "0");
+  EXPECT_EQ(value(outcome.results[1], "feasible"), "1");
+  EXPECT_EQ(value(outcome.results[1], "independent_broken"), "0");
+  EXPECT_EQ(result_columns(suite)[2], "problem");
+}
+
+TEST(SuiteReport, IsSelfContainedWithPicturesOfEveryScene) {
+  ScratchDir dir("runner-report");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  write_report(suite, outcome, dir.path("out"));
+  const std::string html = read_text(dir.path("out/report.html"));
+  EXPECT_EQ(html.find("http:"), std::string::npos);
+  EXPECT_EQ(html.find("https:"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_NE(html.find("data:image/png;base64,iVBORw0KGgo"), std::string::npos);  // PNG magic
+  // Each scene: a top and a side view per run (2 runs), three plots.
+  for (const char* scene : {"room", "wall"}) {
+    EXPECT_NE(html.find(std::string("Scene <code>") + scene), std::string::npos) << scene;
+  }
+  std::size_t top_views = 0, pos = 0;
+  while ((pos = html.find("top view (", pos)) != std::string::npos) ++top_views, ++pos;
+  EXPECT_EQ(top_views, 4u);
+  EXPECT_NE(html.find("visible fraction of the body"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.path("out/report.html.tmp")));
+}
+
+}  // namespace
+}  // namespace sightline::experiments

@@ -1,0 +1,201 @@
+// bnb against brute force on random small problems mixing tables (dense, sparse, hard,
+// soft), not-equal and all-different constraints, plus its limits, start bound, counting
+// and infeasibility proofs.
+#include "solvers/bnb.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "brute_force.h"
+#include "csp/kinds/all_different.h"
+#include "csp/kinds/not_equal.h"
+#include "csp/kinds/table.h"
+#include "solvers/registry.h"
+
+namespace sightline::solvers {
+namespace {
+
+using csp::VariableId;
+
+// A random problem of `n` variables (domains of 2..4 values, some of them non-integers)
+// with a mix of constraint kinds; `hard_share` of them hard.
+std::unique_ptr<csp::Problem> random_problem(std::mt19937& rng, std::size_t n, double hard_share) {
+  auto p = std::make_unique<csp::Problem>("random");
+  std::uniform_int_distribution<int> size(2, 4), coin(0, 99), cost(0, 6), kind(0, 5);
+  std::vector<std::vector<double>> domains;
+  for (std::size_t v = 0; v < n; ++v) {
+    std::vector<double> values;
+    const int d = size(rng);
+    const bool odd = coin(rng) < 30;
+    for (int i = 0; i < d; ++i) values.push_back(odd ? 0.5 * i - 1 : i);
+    domains.push_back(values);
+    p->add_variable("v" + std::to_string(v), csp::Domain::value_set(values));
+  }
+  auto pick_scope = [&](std::size_t arity) {
+    std::vector<VariableId> all(n);
+    for (std::size_t v = 0; v < n; ++v) all[v] = static_cast<VariableId>(v);
+    std::shuffle(all.begin(), all.end(), rng);
+    all.resize(arity);
+    return all;
+  };
+  const std::size_t constraints = n + n / 2;
+  for (std::size_t k = 0; k < constraints; ++k) {
+    const bool hard = coin(rng) < hard_share * 100;
+    const int which = kind(rng);
+    if (which <= 3) {  // a table of arity 1..3
+      const std::size_t arity = 1 + which % 3;
+      const auto scope = pick_scope(arity);
+      std::vector<csp::Table::Entry> entries;
+      std::vector<std::size_t> index(arity, 0);
+      while (true) {
+        if (coin(rng) < 50) {
+          std::vector<double> values;
+          for (std::size_t p = 0; p < arity; ++p) values.push_back(domains[scope[p]][index[p]]);
+          entries.push_back({values, hard ? (coin(rng) < 70 ? 0.0 : 1.0) : cost(rng)});
+        }
+        std::size_t p = 0;
+        for (; p < arity; ++p) {
+          if (++index[p] < domains[scope[p]].size()) break;
+          index[p] = 0;
+        }
+        if (p == arity) break;
+      }
+      const double default_cost = hard ? (coin(rng) < 50 ? 1.0 : 0.0) : cost(rng);
+      p->add_constraint(std::make_unique<csp::Table>(scope, entries, default_cost,
+                                                     hard ? 1.0 : 1.0 + coin(rng) % 3, hard));
+    } else if (which == 4) {
+      const auto scope = pick_scope(2);
+      p->add_constraint(
+          std::make_unique<csp::NotEqual>(scope[0], scope[1], 0, 1.0 + cost(rng), hard));
+    } else {
+      const auto scope = pick_scope(std::min<std::size_t>(n, 3));
+      const auto measure = coin(rng) < 50 ? csp::AllDifferent::Measure::kVariables
+                                          : csp::AllDifferent::Measure::kDecomposition;
+      p->add_constraint(std::make_unique<csp::AllDifferent>(scope, std::vector<double>{}, measure,
+                                                            1.0 + cost(rng), hard));
+    }
+  }
+  return p;
+}
+
+SolverResult run_bnb(const csp::Problem& p, const OptionValues& options = {},
+                     const csp::Assignment* start = nullptr, SolveLimits limits = {}) {
+  auto solver = SolverRegistry::global().create("bnb", options);
+  SolveContext context;
+  context.limits = limits;
+  const csp::Assignment s = start ? *start : p.default_assignment();
+  return solver->solve(p, s, context);
+}
+
+TEST(BranchAndBound, FindsTheBruteForceOptimumOnRandomProblems) {
+  std::mt19937 rng(2024);
+  int feasible = 0, infeasible = 0;
+  for (int round = 0; round < 150; ++round) {
+    auto p = random_problem(rng, 3 + round % 6, round % 3 == 0 ? 0.5 : 0.2);
+    const auto expected = testing::brute_force_optimum(*p);
+    const SolverResult r = run_bnb(*p);
+    if (expected.feasible) {
+      ++feasible;
+      ASSERT_EQ(r.stop, StopReason::kProvenOptimal) << "round " << round << ": " << r.message;
+      ASSERT_TRUE(r.feasible()) << "round " << round;
+      ASSERT_NEAR(r.cost(), expected.cost, 1e-9) << "round " << round;
+      ASSERT_NEAR(p->score(r.best).soft, r.cost(), 1e-12);
+    } else {
+      ++infeasible;
+      ASSERT_EQ(r.stop, StopReason::kCompleted) << "round " << round;
+      ASSERT_NE(r.message.find("proved infeasible"), std::string::npos) << r.message;
+    }
+  }
+  // The generator must exercise both outcomes for this test to mean something.
+  EXPECT_GT(feasible, 50);
+  EXPECT_GT(infeasible, 5);
+}
+
+TEST(BranchAndBound, CountsEveryOptimalAssignment) {
+  std::mt19937 rng(77);
+  std::uint64_t total_counted = 0;
+  for (int round = 0; round < 100; ++round) {
+    auto p = random_problem(rng, 3 + round % 5, 0.3);
+    const auto expected = testing::brute_force_optimum(*p);
+    if (!expected.feasible) continue;
+    const SolverResult r = run_bnb(*p, {{"count_optimal", "true"}});
+    ASSERT_EQ(r.stop, StopReason::kProvenOptimal);
+    ASSERT_NEAR(r.cost(), expected.cost, 1e-9);
+    ASSERT_EQ(r.solutions_at_best, expected.count) << "round " << round;
+    total_counted += r.solutions_at_best;
+  }
+  EXPECT_GT(total_counted, 100u);  // many ties, not just single optima
+}
+
+TEST(BranchAndBound, CountsOptimaAlsoWhenStartingFromAnOptimum) {
+  std::mt19937 rng(5);
+  for (int round = 0; round < 30; ++round) {
+    auto p = random_problem(rng, 5, 0.2);
+    const auto expected = testing::brute_force_optimum(*p);
+    if (!expected.feasible) continue;
+    const SolverResult first = run_bnb(*p);
+    const SolverResult again = run_bnb(*p, {{"count_optimal", "true"}}, &first.best);
+    ASSERT_EQ(again.solutions_at_best, expected.count) << "round " << round;
+  }
+}
+
+TEST(BranchAndBound, UsesAFeasibleStartAsTheInitialUpperBound) {
+  std::mt19937 rng(9);
+  int checked = 0;
+  for (int round = 0; round < 30; ++round) {
+    auto p = random_problem(rng, 8, 0.1);
+    const OptionValues no_bound = {{"use_start_bound", "false"}};
+    const SolverResult cold = run_bnb(*p, no_bound);
+    if (!cold.feasible()) continue;
+    ++checked;
+    // From an optimal start only a strictly better assignment could replace it: none is.
+    const SolverResult warm = run_bnb(*p, {}, &cold.best);
+    ASSERT_EQ(warm.stop, StopReason::kProvenOptimal);
+    ASSERT_EQ(warm.best, cold.best);
+    ASSERT_EQ(warm.cost(), cold.cost());
+    // Without the bound, the start changes nothing.
+    const SolverResult ignored = run_bnb(*p, no_bound, &cold.best);
+    ASSERT_EQ(ignored.iterations, cold.iterations);
+  }
+  EXPECT_GT(checked, 10);
+}
+
+TEST(BranchAndBound, StopsAtTheNodeLimitWithTheBestFoundAndSaysItIsNotProved) {
+  std::mt19937 rng(1);
+  auto p = random_problem(rng, 14, 0.0);
+  SolveLimits limits;
+  limits.max_iterations = 20;
+  const SolverResult r = run_bnb(*p, {}, nullptr, limits);
+  EXPECT_EQ(r.stop, StopReason::kIterationLimit);
+  EXPECT_LE(r.iterations, 20u);
+  EXPECT_NE(r.message.find("not proved"), std::string::npos) << r.message;
+  EXPECT_TRUE(r.feasible());  // no hard constraints: the first leaf is feasible
+}
+
+TEST(BranchAndBound, ProvesInfeasibilityAndReturnsTheStart) {
+  // Three pairwise different variables with two values each.
+  csp::Problem p;
+  for (int i = 0; i < 3; ++i)
+    p.add_variable("x" + std::to_string(i), csp::Domain::integer_range(0, 1));
+  p.add_constraint(
+      std::make_unique<csp::AllDifferent>(std::vector<VariableId>{0, 1, 2}, std::vector<double>{},
+                                          csp::AllDifferent::Measure::kVariables, 1.0, true));
+  const csp::Assignment start = {1, 1, 1};
+  const SolverResult r = run_bnb(p, {}, &start);
+  EXPECT_EQ(r.stop, StopReason::kCompleted);
+  EXPECT_NE(r.message.find("proved infeasible"), std::string::npos);
+  EXPECT_EQ(r.best, start);
+}
+
+TEST(BranchAndBound, DefaultOptionsAreValidAndContinuousProblemsAreRefused) {
+  EXPECT_EQ(BranchAndBoundSolver::Options{}.validate(), "");
+  csp::Problem p;
+  p.add_variable("x", csp::Domain::real_interval(0, 1));
+  auto solver = SolverRegistry::global().create("bnb");
+  EXPECT_NE(solver->unsuitable_reason(p), "");
+  EXPECT_THROW(SolverRegistry::global().create("bnb", {{"count_optimal", "maybe"}}), OptionError);
+}
+
+}  // namespace
+}  // namespace sightline::solvers
