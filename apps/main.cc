@@ -8,14 +8,11 @@
 #include "apps/commands.h"
 #include "apps/solve_options.h"
 #include "domains/camera/control/camera_solvers.h"
-#include "domains/camera/control/camera_solvers.h"
 
 int main(int argc, char** argv) {
   namespace apps = sightline::apps;
   // The camera's own solvers join the one registry, so every command can name them.
   sightline::camera::solver_registry();
-  // Every command sees every solver: the generic ones and the camera's octrees.
-  sightline::camera::register_camera_solvers(sightline::solvers::SolverRegistry::global());
   CLI::App app{"sightline: weighted constraint satisfaction with pluggable solvers"};
   app.name("sightline");
   app.require_subcommand(1);

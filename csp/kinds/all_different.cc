@@ -187,6 +187,18 @@ bool AllDifferent::has_zero_offsets() const {
 }
 
 namespace {
+// violation and min_violation work in these per-thread buffers, which grow to the largest
+// arity seen and are then reused: no allocation per call, and constraints stay safe to
+// evaluate from several threads at once (a mutable member would not be).
+std::vector<double>& key_scratch() {
+  thread_local std::vector<double> keys;
+  return keys;
+}
+std::vector<std::int32_t>& count_scratch() {
+  thread_local std::vector<std::int32_t> counts;
+  return counts;
+}
+
 // Sum over the distinct keys of the measure's cost of c equal keys; `keys` gets sorted.
 double repeats(std::vector<double>& keys, AllDifferent::Measure measure) {
   std::sort(keys.begin(), keys.end());
@@ -205,8 +217,8 @@ double repeats(std::vector<double>& keys, AllDifferent::Measure measure) {
 double AllDifferent::min_violation(std::span<const double> values,
                                    std::span<const std::uint8_t> assigned) const {
   const auto scope = this->scope();
-  std::vector<double> keys;
-  keys.reserve(scope.size());
+  std::vector<double>& keys = key_scratch();
+  keys.clear();
   for (std::size_t i = 0; i < scope.size(); ++i) {
     if (assigned[scope[i]]) keys.push_back(values[scope[i]] + offsets_[i]);
   }
@@ -218,7 +230,8 @@ double AllDifferent::violation(std::span<const double> values) const {
   if (key_range_) {
     // O(arity + range) by counting, as long as every key falls in the range.
     const auto size = static_cast<std::size_t>(key_range_->hi - key_range_->lo + 1);
-    std::vector<std::int32_t> counts(size, 0);
+    std::vector<std::int32_t>& counts = count_scratch();
+    counts.assign(size, 0);
     bool in_range = true;
     for (std::size_t i = 0; i < scope.size() && in_range; ++i) {
       const double key = values[scope[i]] + offsets_[i] - static_cast<double>(key_range_->lo);
@@ -233,7 +246,8 @@ double AllDifferent::violation(std::span<const double> values) const {
       return total;
     }
   }
-  std::vector<double> keys(scope.size());
+  std::vector<double>& keys = key_scratch();
+  keys.resize(scope.size());
   for (std::size_t i = 0; i < scope.size(); ++i) keys[i] = values[scope[i]] + offsets_[i];
   return repeats(keys, measure_);
 }

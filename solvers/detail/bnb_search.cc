@@ -386,6 +386,12 @@ void BranchAndBoundSearch::search(std::size_t depth) {
   for (std::size_t k = order_begin; k < order_end && !stopped_; ++k) {
     const auto [bound, index] = order_stack_[k];
     if (prunes(others + bound)) break;  // later values are no cheaper
+    // Checked per branch, not only per node entered: failed assignments (forward checking
+    // wiping a domain out) can otherwise run through whole subtrees unchecked.
+    if (budget_->exhausted(full_evaluations_, nodes_)) {
+      stopped_ = true;
+      break;
+    }
     ++nodes_;
     const Sums saved = sums_;
     const std::size_t mark = trail_.size();

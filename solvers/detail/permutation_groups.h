@@ -7,8 +7,21 @@
 // neighbourhood of Sosic & Gu's N-queens solvers, found here from the constraints alone:
 // nothing queen-specific. Soft all_differents are left alone (their optimum need not be a
 // permutation), and a variable belongs to at most one group (the first found).
+//
+// Pinned variables: hard unary constraints (a clue, a fixed cell) may allow a group variable
+// one value only. Such a variable is pinned: starts put it at that value and swaps leave it
+// there, so the search permutes only the group's free variables over the free values (node
+// consistency, done once). Pins are kept only when consistent (no value pinned twice);
+// otherwise the group has none and the search sorts the clash out by itself.
+//
+// Pinned variables: a hard unary constraint (a clue, a fixed cell) may allow one value only
+// to a group variable. Such a variable is pinned: starts put it at that value and swaps
+// leave it there, so the search moves only the group's free variables among the free
+// values (node consistency, done once). Pins are kept only when they are consistent (each
+// value pinned at most once); otherwise the group has no pins and the search sorts it out.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "csp/problem.h"
@@ -18,6 +31,9 @@ namespace sightline::solvers::detail {
 struct PermutationGroup {
   std::vector<csp::VariableId> variables;  // in scope order
   std::vector<double> values;              // the common domain's values, ascending
+  std::vector<csp::VariableId> free;       // the variables not pinned, in scope order
+  std::vector<double> free_values;         // the values not pinned, ascending
+  std::vector<std::pair<csp::VariableId, double>> pinned;  // variable, its only value
 };
 
 std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& problem);

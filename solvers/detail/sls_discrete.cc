@@ -34,6 +34,7 @@ class DiscreteSearch {
     group_of_.assign(n_, -1);
     for (std::size_t g = 0; g < groups_.size(); ++g) {
       for (csp::VariableId v : groups_[g].variables) group_of_[v] = static_cast<int>(g);
+      for (const auto& pin : groups_[g].pinned) group_of_[pin.first] = kPinned;
     }
     std::size_t incidences = 0;
     for (csp::VariableId v = 0; v < n_; ++v) incidences += problem.incidences(v).size();
@@ -61,28 +62,33 @@ class DiscreteSearch {
  private:
   // --- runs and restarts ---------------------------------------------------------------
 
-  // Group variables whose values are not a permutation of the group's values get a random one.
+  // Group variables whose values are not a permutation of the group's values, or whose pinned
+  // variables are not at their values, get a random permutation that respects the pins.
   void make_groups_permutations(csp::Assignment& values) {
     std::vector<double> seen;
     for (const PermutationGroup& g : groups_) {
       seen.clear();
       for (csp::VariableId v : g.variables) seen.push_back(values[v]);
       std::sort(seen.begin(), seen.end());
-      if (seen != g.values) shuffle_group(g, values);
+      const bool pins_hold = std::all_of(g.pinned.begin(), g.pinned.end(),
+                                         [&](const auto& p) { return values[p.first] == p.second; });
+      if (seen != g.values || !pins_hold) shuffle_group(g, values);
     }
   }
 
   void shuffle_group(const PermutationGroup& g, csp::Assignment& values) {
-    const std::size_t k = g.variables.size();
-    for (std::size_t i = 0; i < k; ++i) values[g.variables[i]] = g.values[i];
+    for (const auto& [v, value] : g.pinned) values[v] = value;
+    const std::size_t k = g.free.size();
+    if (k == 0) return;
+    for (std::size_t i = 0; i < k; ++i) values[g.free[i]] = g.free_values[i];
     for (std::size_t i = k - 1; i > 0; --i) {  // Fisher-Yates
-      std::swap(values[g.variables[i]], values[g.variables[random_.index(i + 1)]]);
+      std::swap(values[g.free[i]], values[g.free[random_.index(i + 1)]]);
     }
   }
 
   void randomise(csp::Assignment& values) {
     for (csp::VariableId v = 0; v < n_; ++v) {
-      if (group_of_[v] >= 0) continue;
+      if (group_of_[v] != kNoGroup) continue;
       const csp::Domain& d = problem_.variable(v).domain;
       values[v] = d.value_at(random_.index(d.size()));
     }
@@ -98,6 +104,9 @@ class DiscreteSearch {
     tabu_value_.assign(n_, 0.0);
     list_.clear();
     listed_.assign(n_, 0);
+    weights_.assign(problem_.num_constraints(), 1.0);
+    stamps_.assign(problem_.num_constraints(), 0);
+    stamp_ = 0;
   }
 
   // Restarts from a random assignment, or ends the search when the restarts are used up.
@@ -238,7 +247,7 @@ class DiscreteSearch {
   // frees v less often (about e^-2 of the time on N-queens instead of 0.43 on average).
   bool greedy_swap(csp::VariableId v, std::size_t first) {
     const PermutationGroup& g = groups_[static_cast<std::size_t>(group_of_[v])];
-    const std::size_t size = g.variables.size();
+    const std::size_t size = g.free.size();
     if (first >= size) return false;
     const double vi = evaluator_->values()[v];
     std::size_t window = size - first;
@@ -248,7 +257,7 @@ class DiscreteSearch {
     bool screened = false;
     csp::Score best_half;
     for (std::int64_t t = 0; t < options_.greedy_samples; ++t) {
-      const csp::VariableId j = g.variables[first + random_.index(window)];
+      const csp::VariableId j = g.free[first + random_.index(window)];
       if (out_of_budget()) return false;
       const double vj = evaluator_->values()[j];
       // Screen first with the cheap half of the swap (v's side only), and try for real only
@@ -283,12 +292,16 @@ class DiscreteSearch {
   // Sets `partner` when it moves.
   bool swap_step(csp::VariableId v, csp::VariableId& partner) {
     const PermutationGroup& g = groups_[static_cast<std::size_t>(group_of_[v])];
-    const std::size_t size = g.variables.size();
+    const std::size_t size = g.free.size();
+    if (size < 2) return false;
+    if (size - 1 <= static_cast<std::size_t>(options_.swap_samples)) {
+      return small_swap_step(v, g, partner);
+    }
     const double vi = evaluator_->values()[v];
     std::size_t finalists = 0;
     csp::Score best_half;
     for (std::int64_t t = 0; t < options_.swap_samples; ++t) {
-      const csp::VariableId candidate = g.variables[random_.index(size)];
+      const csp::VariableId candidate = g.free[random_.index(size)];
       if (candidate == v) continue;
       if (out_of_budget()) return false;
       const csp::Score half = evaluator_->delta(v, evaluator_->values()[candidate]);
@@ -328,11 +341,83 @@ class DiscreteSearch {
     }
     // A local minimum for v: sometimes a random swap instead (random walk).
     if (!random_.chance(options_.walk_probability) || out_of_budget()) return false;
-    partner = g.variables[random_.index(size)];
+    partner = g.free[random_.index(size)];
     if (partner == v) return false;
     ++evaluations_;
     swap(v, partner);
     return true;
+  }
+
+  // swap_step for a group with at most swap_samples other free variables: every partner is
+  // tried for real and the best is taken, judged with breakout weights (Morris 1993): the
+  // hard part of a move's delta is sum_c w_c (violation after - violation before) over the
+  // hard constraints it touches, w_c >= 1, the soft part is the plain soft delta. When no
+  // partner lowers or keeps that weighted score (a local minimum for v), the weight of every
+  // violated hard constraint around v grows by one: a constraint that stays violated at
+  // local minima becomes expensive, and the search is pushed to satisfy it at the cost of
+  // others instead of cycling. Tabu as in swap_step, except for moves that improve the true
+  // score. The best keeper and restarts still follow the true score.
+  bool small_swap_step(csp::VariableId v, const PermutationGroup& g, csp::VariableId& partner) {
+    const double vi = evaluator_->values()[v];
+    csp::VariableId chosen = v;
+    csp::Score best;
+    std::size_t ties = 0;
+    for (csp::VariableId j : g.free) {
+      if (j == v) continue;
+      if (out_of_budget()) return false;
+      const double vj = evaluator_->values()[j];
+      collect_touched(v, j);
+      const csp::Score before = evaluator_->score();
+      evaluator_->assign(v, vj);
+      evaluator_->assign(j, vi);
+      ++evaluations_;
+      const csp::Score delta = evaluator_->score() - before;
+      const csp::Score weighted{weighted_hard_change(), delta.soft};
+      evaluator_->assign(j, vj);
+      evaluator_->assign(v, vi);
+      if (!improves(delta) && (is_tabu(v, vj) || is_tabu(j, vi))) continue;
+      if (chosen == v || weighted.better_than(best)) {
+        chosen = j;
+        best = weighted;
+        ties = 1;
+      } else if (!best.better_than(weighted) && random_.index(++ties) == 0) {
+        chosen = j;
+      }
+    }
+    if (chosen != v && !worsens(best)) {
+      partner = chosen;
+      swap(v, chosen);
+      return true;
+    }
+    for (const auto& incidence : problem_.incidences(v)) {
+      const csp::ConstraintId c = incidence.constraint;
+      if (problem_.constraint(c).is_hard() && evaluator_->violation(c) > 0) weights_[c] += 1;
+    }
+    if (!random_.chance(options_.walk_probability) || out_of_budget()) return false;
+    partner = g.free[random_.index(g.free.size())];
+    if (partner == v) return false;
+    ++evaluations_;
+    swap(v, partner);
+    return true;
+  }
+
+  // The hard constraints around v and j, each once, with their violations now.
+  void collect_touched(csp::VariableId v, csp::VariableId j) {
+    ++stamp_;
+    touched_.clear();
+    for (csp::VariableId x : {v, j}) {
+      for (const auto& incidence : problem_.incidences(x)) {
+        const csp::ConstraintId c = incidence.constraint;
+        if (stamps_[c] == stamp_ || !problem_.constraint(c).is_hard()) continue;
+        stamps_[c] = stamp_;
+        touched_.push_back({c, evaluator_->violation(c)});
+      }
+    }
+  }
+  double weighted_hard_change() const {
+    double change = 0;
+    for (const auto& [c, before] : touched_) change += weights_[c] * (evaluator_->violation(c) - before);
+    return change;
   }
 
   // --- the conflict list -----------------------------------------------------------------
@@ -350,7 +435,7 @@ class DiscreteSearch {
   // costs at most a third of the search whatever the size of the problem.
   void rescan() {
     for (csp::VariableId v = 0; v < n_; ++v) {
-      if (evaluator_->involvement(v) > 0) push(v);
+      if (group_of_[v] != kPinned && evaluator_->involvement(v) > 0) push(v);
     }
     last_rescan_ = evaluations_;
   }
@@ -361,13 +446,13 @@ class DiscreteSearch {
   // its sampled values (or swaps with later variables of its group) offers it.
   void greedy_pass() {
     for (csp::VariableId v = 0; v < n_ && !out_of_budget(); ++v) {
-      if (group_of_[v] >= 0 || evaluator_->involvement(v) <= 0) continue;
+      if (group_of_[v] != kNoGroup || evaluator_->involvement(v) <= 0) continue;
       ++iterations_;
       if (value_step(v, true)) after_move();
     }
     for (const PermutationGroup& g : groups_) {
-      for (std::size_t k = 0; k + 1 < g.variables.size() && !out_of_budget(); ++k) {
-        const csp::VariableId v = g.variables[k];
+      for (std::size_t k = 0; k + 1 < g.free.size() && !out_of_budget(); ++k) {
+        const csp::VariableId v = g.free[k];
         if (evaluator_->involvement(v) <= 0) continue;
         ++iterations_;
         if (greedy_swap(v, k + 1)) after_move();
@@ -412,7 +497,8 @@ class DiscreteSearch {
   const std::size_t n_;
 
   std::vector<PermutationGroup> groups_;
-  std::vector<int> group_of_;  // group index per variable, -1 when none
+  static constexpr int kNoGroup = -1, kPinned = -2;
+  std::vector<int> group_of_;  // group index per variable, kNoGroup, or kPinned (never moves)
 
   std::unique_ptr<csp::IncrementalEvaluator> evaluator_;
   BestKeeper best_;
@@ -422,6 +508,10 @@ class DiscreteSearch {
   static constexpr std::size_t kFinalists = 4;
   std::array<csp::VariableId, kFinalists> finalists_{};  // swap_step's best-screened partners
   std::vector<csp::VariableId> list_;                    // variables believed to be in conflict
+  std::vector<double> weights_;                          // breakout weights (small groups)
+  std::vector<std::uint32_t> stamps_;                    // collect_touched's marks
+  std::uint32_t stamp_ = 0;
+  std::vector<std::pair<csp::ConstraintId, double>> touched_;  // constraint, violation before
   std::vector<char> listed_;
   std::uint64_t last_rescan_ = 0, rescan_work_ = 0;  // in evaluations
 
