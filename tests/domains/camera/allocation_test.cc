@@ -18,6 +18,10 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
+// GCC cannot see that the replaced operator new below is malloc-based and warns that its
+// free() does not match; the pairing is ours and correct.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 void* operator new(std::size_t size) {
   ++g_allocations;
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
