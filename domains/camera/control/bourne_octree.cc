@@ -31,24 +31,11 @@ void BourneOctreeSolver::solve_into(const csp::Problem& problem, std::span<const
                                     const solvers::SolveContext& context,
                                     solvers::SolverResult& result) {
   solvers::Budget budget(context.limits, 1);
-  if (viewed_ != &problem || !view_) {
-    std::string why;
-    view_ = CameraProblemView::find(problem, &why);
-    if (!view_) throw std::invalid_argument(name_ + ": " + why);
-    viewed_ = &problem;
-  }
-  const CameraProblemView& view = *view_;
+  const CameraProblemView& view = views_.get(problem, name_);
   OctreeSearch search(problem, view);
   const Eigen::Vector3d p0 = search.clamp(Eigen::Vector3d(start[0], start[1], start[2]));
 
-  double half = options_.initial_size;
-  if (half <= 0) {
-    half = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 3; ++i) {
-      const auto& d = problem.variable(i).domain;
-      half = std::min(half, 0.5 * (d.upper() - d.lower()));
-    }
-  }
+  const double half = search.first_half_size(options_.initial_size);
   // "calculate camera facing and right vectors": facing = horizontal camera -> look-at.
   const Eigen::Vector3d look = view.look_at(problem);
   Eigen::Vector3d facing(look.x() - p0.x(), 0, look.z() - p0.z());

@@ -41,8 +41,7 @@ class BourneOctreeSolver : public solvers::Solver {
  private:
   std::string name_;
   Options options_;
-  const csp::Problem* viewed_ = nullptr;
-  std::optional<CameraProblemView> view_;
+  CameraProblemViewCache views_;
 };
 
 }  // namespace sightline::camera

@@ -1,5 +1,7 @@
 #include "domains/camera/control/camera_problem_view.h"
 
+#include <stdexcept>
+
 namespace sightline::camera {
 
 std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& problem,
@@ -56,6 +58,17 @@ Eigen::Vector3d CameraProblemView::character(const csp::Problem& problem) const 
 
 double CameraProblemView::character_yaw(const csp::Problem& problem) const {
   return problem.parameters().get(char_yaw_);
+}
+
+const CameraProblemView& CameraProblemViewCache::get(const csp::Problem& problem,
+                                                     const std::string& solver) {
+  if (problem_ != &problem || !view_) {
+    std::string why;
+    view_ = CameraProblemView::find(problem, &why);
+    if (!view_) throw std::invalid_argument(solver + ": " + why);
+    problem_ = &problem;
+  }
+  return *view_;
 }
 
 }  // namespace sightline::camera

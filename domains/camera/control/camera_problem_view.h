@@ -50,4 +50,16 @@ class CameraProblemView {
   std::size_t look_x_ = 0, char_x_ = 0, char_yaw_ = 0;
 };
 
+// Finds the view once per problem (a camera problem is re-parameterised every frame, never
+// rebuilt), so a solver called every frame scans the constraints only on its first call.
+class CameraProblemViewCache {
+ public:
+  // Throws std::invalid_argument ("<solver>: needs a camera problem ...") for other problems.
+  const CameraProblemView& get(const csp::Problem& problem, const std::string& solver);
+
+ private:
+  const csp::Problem* problem_ = nullptr;
+  std::optional<CameraProblemView> view_;
+};
+
 }  // namespace sightline::camera

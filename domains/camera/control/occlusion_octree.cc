@@ -33,22 +33,11 @@ std::string OcclusionOctreeSolver::unsuitable_reason(const csp::Problem& problem
   return CameraProblemView::find(problem, &why) ? "" : why;
 }
 
-const CameraProblemView& OcclusionOctreeSolver::view_for(const csp::Problem& problem) {
-  // The view is found once per problem: a camera problem is re-parameterised, not rebuilt.
-  if (viewed_ != &problem || !view_) {
-    std::string why;
-    view_ = CameraProblemView::find(problem, &why);
-    if (!view_) throw std::invalid_argument(name_ + ": " + why);
-    viewed_ = &problem;
-  }
-  return *view_;
-}
-
 void OcclusionOctreeSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                                        const solvers::SolveContext& context,
                                        solvers::SolverResult& result) {
   solvers::Budget budget(context.limits, 1);
-  const CameraProblemView& view = view_for(problem);
+  const CameraProblemView& view = views_.get(problem, name_);
   OctreeSearch search(problem, view);
   const Eigen::Vector3d p0(start[0], start[1], start[2]);
   OctreeSettings settings;

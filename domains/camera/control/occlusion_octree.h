@@ -44,12 +44,9 @@ class OcclusionOctreeSolver : public solvers::Solver {
                   const solvers::SolveContext& context, solvers::SolverResult& result) override;
 
  private:
-  const CameraProblemView& view_for(const csp::Problem& problem);
-
   std::string name_;
   Options options_;
-  const csp::Problem* viewed_ = nullptr;
-  std::optional<CameraProblemView> view_;
+  CameraProblemViewCache views_;
 };
 
 }  // namespace sightline::camera

@@ -64,15 +64,18 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
   return out;
 }
 
-Candidate OctreeSearch::run(const Eigen::Vector3d& start, const OctreeSettings& settings) {
-  double half = settings.initial_half_size;
-  if (half <= 0) {
-    half = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 3; ++i) {
-      const auto& d = problem_->variable(i).domain;
-      half = std::min(half, 0.5 * (d.upper() - d.lower()));
-    }
+double OctreeSearch::first_half_size(double requested) const {
+  if (requested > 0) return requested;
+  double half = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const auto& d = problem_->variable(i).domain;
+    half = std::min(half, 0.5 * (d.upper() - d.lower()));
   }
+  return half;
+}
+
+Candidate OctreeSearch::run(const Eigen::Vector3d& start, const OctreeSettings& settings) {
+  double half = first_half_size(settings.initial_half_size);
   Eigen::Vector3d centre = clamp(start);
   Candidate best;
   best.cost = std::numeric_limits<double>::infinity();

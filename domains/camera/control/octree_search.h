@@ -51,6 +51,9 @@ class OctreeSearch {
   Candidate evaluate(const Eigen::Vector3d& p, bool require_visible, double bound);
   // Runs the passes from `centre`; returns the best valid candidate (valid = false if none).
   Candidate run(const Eigen::Vector3d& centre, const OctreeSettings& settings);
+  // Half-size of the first cube: `requested` when > 0, else half the smallest domain width
+  // (the problem's search box).
+  double first_half_size(double requested) const;
   // Clamps a point into the variables' domains.
   Eigen::Vector3d clamp(const Eigen::Vector3d& p) const;
 
