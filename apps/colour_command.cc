@@ -34,14 +34,8 @@ void add_colour_command(CLI::App& app) {
     const solvers::SolveContext context = make_context(args->solve);
     std::cout << "graph " << graph.name() << ": " << graph.num_vertices() << " vertices, "
               << graph.num_edges() << " edges, " << args->colours << " colours\n";
-    if (const std::string why = solver->unsuitable_reason(*problem); !why.empty()) {
-      throw solvers::OptionError("solver '" + solver->name() + "' cannot solve " + args->file +
-                                 ": " + why);
-    }
     const solvers::SolverResult result =
-        solver->solve(*problem, problem->default_assignment(), context);
-    problem->check_assignment(result.best);
-    print_result(std::cout, *problem, result, solver->name());
+        solve_and_print(std::cout, *problem, *solver, context, args->file);
     const std::size_t conflicts = colouring::count_conflicts(graph, result.best);
     std::cout << "independent check: " << count_of(conflicts, "conflicting edge")
               << (conflicts == 0 ? " (a proper colouring)" : "") << '\n';

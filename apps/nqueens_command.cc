@@ -29,14 +29,8 @@ void add_nqueens_command(CLI::App& app) {
     auto solver = make_solver(args->solve);
     const solvers::SolveContext context = make_context(args->solve);
     std::cout << "problem " << describe_problem(*problem) << '\n';
-    if (const std::string why = solver->unsuitable_reason(*problem); !why.empty()) {
-      throw solvers::OptionError("solver '" + solver->name() + "' cannot solve " + problem->name() +
-                                 ": " + why);
-    }
     const solvers::SolverResult result =
-        solver->solve(*problem, problem->default_assignment(), context);
-    problem->check_assignment(result.best);
-    print_result(std::cout, *problem, result, solver->name());
+        solve_and_print(std::cout, *problem, *solver, context, problem->name());
     const std::size_t attacks = nqueens::attacking_pairs(result.best);
     std::cout << "independent check: " << count_of(attacks, "attacking pair")
               << (attacks == 0 ? " (a solution)" : "") << '\n';

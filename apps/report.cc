@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/text_table.h"
+#include "solvers/options.h"
 
 namespace sightline::apps {
 
@@ -23,6 +24,19 @@ std::string describe_problem(const csp::Problem& problem) {
       << problem.num_constraints() << " constraints (" << hard << " hard, "
       << problem.num_constraints() - hard << " soft)";
   return out.str();
+}
+
+solvers::SolverResult solve_and_print(std::ostream& out, const csp::Problem& problem,
+                                      solvers::Solver& solver,
+                                      const solvers::SolveContext& context,
+                                      const std::string& what) {
+  if (const std::string why = solver.unsuitable_reason(problem); !why.empty()) {
+    throw solvers::OptionError("solver '" + solver.name() + "' cannot solve " + what + ": " + why);
+  }
+  solvers::SolverResult result = solver.solve(problem, problem.default_assignment(), context);
+  problem.check_assignment(result.best);
+  print_result(out, problem, result, solver.name());
+  return result;
 }
 
 void print_result(std::ostream& out, const csp::Problem& problem,

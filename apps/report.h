@@ -18,6 +18,14 @@ namespace sightline::apps {
 // "australia: 7 variables (7 discrete, 0 continuous), 9 constraints (0 hard, 9 soft)".
 std::string describe_problem(const csp::Problem& problem);
 
+// Refuses (solvers::OptionError naming `what`) a solver unsuitable for `problem`; otherwise
+// solves from the default assignment, checks the answer lies in the domains and prints it
+// with print_result. The one way every solving command runs a solver.
+solvers::SolverResult solve_and_print(std::ostream& out, const csp::Problem& problem,
+                                      solvers::Solver& solver,
+                                      const solvers::SolveContext& context,
+                                      const std::string& what);
+
 // The brief report, then "violated constraints: V of C (H hard, S soft)" and the `top`
 // costliest violated ones with their labels.
 void print_result(std::ostream& out, const csp::Problem& problem,

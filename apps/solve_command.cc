@@ -30,14 +30,8 @@ void add_solve_command(CLI::App& app) {
     auto solver = make_solver(args->solve);
     const solvers::SolveContext context = make_context(args->solve);
     std::cout << "problem " << describe_problem(*problem) << '\n';
-    if (const std::string why = solver->unsuitable_reason(*problem); !why.empty()) {
-      throw solvers::OptionError("solver '" + solver->name() + "' cannot solve " + args->file +
-                                 ": " + why);
-    }
     const solvers::SolverResult result =
-        solver->solve(*problem, problem->default_assignment(), context);
-    problem->check_assignment(result.best);
-    print_result(std::cout, *problem, result, solver->name());
+        solve_and_print(std::cout, *problem, *solver, context, args->file);
     if (!args->solve.solution_path.empty()) {
       write_solution(args->solve.solution_path, *problem, result.best, std::cout);
     }
