@@ -6,6 +6,25 @@
 
 namespace sightline::csp {
 
+namespace {
+[[noreturn]] void partial_unsupported() {
+  throw std::logic_error("this constraint's incremental state does not support partial assignments");
+}
+}  // namespace
+
+double IncrementalState::retract(std::span<const double>, std::size_t) { partial_unsupported(); }
+double IncrementalState::retract_all(std::span<const double> values, std::size_t arity) {
+  double change = 0;
+  for (std::size_t position = 0; position < arity; ++position) change += retract(values, position);
+  return change;
+}
+double IncrementalState::place_delta(std::span<const double>, std::size_t, double) {
+  partial_unsupported();
+}
+void IncrementalState::place(std::span<const double>, std::size_t, double) {
+  partial_unsupported();
+}
+
 Constraint::Constraint(std::vector<VariableId> scope, double weight, bool hard)
     : scope_(std::move(scope)), weight_(weight), hard_(hard) {
   if (!std::isfinite(weight) || weight < 0) {
@@ -30,8 +49,12 @@ double Constraint::min_violation(std::span<const double> values,
 
 double Constraint::violation_and_gradient(std::span<const double> values,
                                           std::span<double> gradient) const {
-  // Central differences with a step scaled to the magnitude of each coordinate.
-  std::vector<double> probe(values.begin(), values.end());
+  // Central differences with a step scaled to the magnitude of each coordinate. The probe
+  // is a per-thread buffer that grows to the largest assignment seen and is then reused, so
+  // the per-frame camera path (a user `expression` term) does not allocate; per-thread keeps
+  // constraints safe to differentiate from several threads at once.
+  thread_local std::vector<double> probe;
+  probe.assign(values.begin(), values.end());
   for (std::size_t i = 0; i < scope_.size(); ++i) {
     const VariableId v = scope_[i];
     const double x = probe[v];

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -42,6 +43,32 @@ class IncrementalState {
   // How much of the current violation the variable at `position` takes part in (0 when it is
   // in no conflict). Local search uses it to pick variables worth moving.
   virtual double involvement(std::span<const double> values, std::size_t position) = 0;
+  // The violation of the assignment the state was made from, when building the state
+  // computed it anyway (saves the owner a second full evaluation); nullopt otherwise.
+  virtual std::optional<double> initial_violation() const { return std::nullopt; }
+
+  // Partial assignments (optional). Constructive starts build an assignment one variable at
+  // a time and judge each choice against the variables already placed only (Sosic & Gu's
+  // placement, stated for any constraint that can say it). A state that supports them can
+  // retract a scope variable, which then no longer counts (the violation is that of the
+  // rest of the scope), and place it back with a value. Only kinds whose violation means
+  // something on part of the scope offer it (all_different: the repeats among the variables
+  // present). While a variable is retracted, delta, commit and involvement are not called
+  // for it. The defaults say "unsupported" and throw std::logic_error if called anyway.
+  virtual bool supports_partial() const { return false; }
+  // The variable at `position` (now at values[scope[position]]) stops counting; returns the
+  // change in violation.
+  virtual double retract(std::span<const double> values, std::size_t position);
+  // Every scope variable (there are `arity`) stops counting at once; returns the change in
+  // violation. The default retracts them one by one; kinds override it when clearing is
+  // cheaper (all_different: zero the counts instead of a random decrement per variable).
+  virtual double retract_all(std::span<const double> values, std::size_t arity);
+  // Change in violation if the retracted variable at `position` came back at `new_value`.
+  virtual double place_delta(std::span<const double> values, std::size_t position,
+                             double new_value);
+  // The retracted variable at `position` comes back at `new_value` (the owner then sets it
+  // in the assignment).
+  virtual void place(std::span<const double> values, std::size_t position, double new_value);
 };
 
 class Constraint {

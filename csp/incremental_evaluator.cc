@@ -1,10 +1,20 @@
 #include "csp/incremental_evaluator.h"
 
+#include <stdexcept>
+
 namespace sightline::csp {
 
-IncrementalEvaluator::IncrementalEvaluator(const Problem& problem, Assignment start)
+IncrementalEvaluator::IncrementalEvaluator(const Problem& problem, Assignment start,
+                                           std::span<const ConstraintId> constant)
     : problem_(&problem), values_(std::move(start)) {
   problem.check_assignment(values_);
+  constant_.assign(problem.num_constraints(), 0);
+  for (ConstraintId id : constant) {
+    if (id >= problem.num_constraints()) {
+      throw std::invalid_argument("IncrementalEvaluator: no constraint " + std::to_string(id));
+    }
+    constant_[id] = 1;
+  }
   resynchronise();
 }
 
@@ -16,66 +26,167 @@ void IncrementalEvaluator::resynchronise() {
   total_ = {};
   for (ConstraintId id = 0; id < m; ++id) {
     const Constraint& c = problem_->constraint(id);
-    states_[id] = c.make_incremental_state(values_);
-    violations_[id] = c.violation(values_);
+    if (!constant_[id]) states_[id] = c.make_incremental_state(values_);
+    const auto known = states_[id] ? states_[id]->initial_violation() : std::nullopt;
+    violations_[id] = known ? *known : c.violation(values_);
     const double w = c.weight() * violations_[id];
     (c.is_hard() ? total_.hard : total_.soft) += w;
   }
   evaluations_ += m;
+  tracked_.resize(m);
+  for (ConstraintId id = 0; id < m; ++id) {
+    const Constraint& c = problem_->constraint(id);
+    IncrementalState* state = states_[id].get();
+    tracked_[id] = {state, &c, c.weight(), c.is_hard(), state && state->supports_partial()};
+  }
+  if (!links_.empty()) return;  // the links depend on the problem only: built once
+  const std::size_t n = problem_->num_variables();
+  first_link_.assign(n + 1, 0);
+  std::size_t total = 0;
+  for (VariableId v = 0; v < n; ++v) total += problem_->incidences(v).size();
+  links_.reserve(total);
+  for (VariableId v = 0; v < n; ++v) {
+    first_link_[v] = static_cast<std::uint32_t>(links_.size());
+    for (const Incidence& inc : problem_->incidences(v)) {
+      if (!constant_[inc.constraint]) links_.push_back(inc);
+    }
+    if (links_.size() > UINT32_MAX) {
+      throw std::length_error("IncrementalEvaluator: more than 2^32 variable-constraint links");
+    }
+  }
+  first_link_[n] = static_cast<std::uint32_t>(links_.size());
 }
 
 Score IncrementalEvaluator::delta(VariableId var, double new_value) {
   Score change;
   const double old_value = values_[var];
   if (old_value == new_value) return change;
-  for (const Incidence& inc : problem_->incidences(var)) {
-    const Constraint& c = problem_->constraint(inc.constraint);
+  const auto var_links = links(var);
+  for (const Incidence& link : var_links) {
+    const Tracked& t = tracked_[link.constraint];
     double dv;
-    if (IncrementalState* s = states_[inc.constraint].get()) {
-      dv = s->delta(values_, inc.position, new_value);
+    if (t.state) {
+      dv = t.state->delta(values_, link.position, new_value);
     } else {
       values_[var] = new_value;
-      dv = c.violation(values_) - violations_[inc.constraint];
+      dv = t.constraint->violation(values_) - violations_[link.constraint];
       values_[var] = old_value;
     }
-    (c.is_hard() ? change.hard : change.soft) += c.weight() * dv;
+    add(change, link.constraint, dv);
   }
-  evaluations_ += problem_->incidences(var).size();
+  evaluations_ += var_links.size();
   return change;
 }
 
 void IncrementalEvaluator::assign(VariableId var, double new_value) {
   const double old_value = values_[var];
   if (old_value == new_value) return;
-  for (const Incidence& inc : problem_->incidences(var)) {
-    const Constraint& c = problem_->constraint(inc.constraint);
+  const auto var_links = links(var);
+  for (const Incidence& link : var_links) {
+    const Tracked& t = tracked_[link.constraint];
     double dv;
-    if (IncrementalState* s = states_[inc.constraint].get()) {
-      dv = s->delta(values_, inc.position, new_value);
-      s->commit(values_, inc.position, new_value);
+    if (t.state) {
+      dv = t.state->delta(values_, link.position, new_value);
+      t.state->commit(values_, link.position, new_value);
     } else {
       values_[var] = new_value;
-      dv = c.violation(values_) - violations_[inc.constraint];
+      dv = t.constraint->violation(values_) - violations_[link.constraint];
       values_[var] = old_value;
     }
-    violations_[inc.constraint] += dv;
-    (c.is_hard() ? total_.hard : total_.soft) += c.weight() * dv;
+    violations_[link.constraint] += dv;
+    add(total_, link.constraint, dv);
   }
   values_[var] = new_value;
-  evaluations_ += problem_->incidences(var).size();
+  evaluations_ += var_links.size();
 }
 
 double IncrementalEvaluator::involvement(VariableId var) {
   double sum = 0;
-  for (const Incidence& inc : problem_->incidences(var)) {
-    const Constraint& c = problem_->constraint(inc.constraint);
-    if (IncrementalState* s = states_[inc.constraint].get()) {
-      sum += c.weight() * s->involvement(values_, inc.position);
-    } else {
-      sum += c.weight() * violations_[inc.constraint];
-    }
+  for (const Incidence& link : links(var)) {
+    const Tracked& t = tracked_[link.constraint];
+    const double v =
+        t.state ? t.state->involvement(values_, link.position) : violations_[link.constraint];
+    sum += t.weight * v;
   }
   return sum;
+}
+
+bool IncrementalEvaluator::can_retract(VariableId var) const {
+  for (const Incidence& link : links(var)) {
+    if (!tracked_[link.constraint].partial) return false;
+  }
+  return true;
+}
+
+void IncrementalEvaluator::retract(VariableId var) {
+  if (!can_retract(var)) {
+    throw std::logic_error("IncrementalEvaluator::retract: variable " + std::to_string(var) +
+                           " has a constraint without partial-assignment support");
+  }
+  for (const Incidence& link : links(var)) {
+    const double dv = tracked_[link.constraint].state->retract(values_, link.position);
+    violations_[link.constraint] += dv;
+    add(total_, link.constraint, dv);
+  }
+}
+
+void IncrementalEvaluator::retract(std::span<const VariableId> vars) {
+  for (VariableId v : vars) {
+    if (!can_retract(v)) retract(v);  // throws, naming the variable
+  }
+  hits_.assign(problem_->num_constraints(), 0);
+  for (VariableId v : vars) {
+    for (const Incidence& link : links(v)) ++hits_[link.constraint];
+  }
+  const auto whole = [&](ConstraintId id) {
+    return hits_[id] == problem_->constraint(id).scope().size();
+  };
+  for (VariableId v : vars) {
+    for (const Incidence& link : links(v)) {
+      if (whole(link.constraint)) continue;
+      const double dv = tracked_[link.constraint].state->retract(values_, link.position);
+      violations_[link.constraint] += dv;
+      add(total_, link.constraint, dv);
+    }
+  }
+  for (ConstraintId id = 0; id < hits_.size(); ++id) {
+    if (!whole(id)) continue;
+    const double dv = tracked_[id].state->retract_all(values_, hits_[id]);
+    violations_[id] += dv;
+    add(total_, id, dv);
+  }
+}
+
+Score IncrementalEvaluator::place_delta(VariableId var, double value) {
+  Score change;
+  const auto var_links = links(var);
+  for (const Incidence& link : var_links) {
+    add(change, link.constraint,
+        tracked_[link.constraint].state->place_delta(values_, link.position, value));
+  }
+  evaluations_ += var_links.size();
+  return change;
+}
+
+bool IncrementalEvaluator::place_is_free(VariableId var, double value) {
+  for (const Incidence& link : links(var)) {
+    ++evaluations_;
+    if (tracked_[link.constraint].state->place_delta(values_, link.position, value) > 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void IncrementalEvaluator::place(VariableId var, double value) {
+  for (const Incidence& link : links(var)) {
+    IncrementalState* state = tracked_[link.constraint].state;
+    const double dv = state->place_delta(values_, link.position, value);
+    state->place(values_, link.position, value);
+    violations_[link.constraint] += dv;
+    add(total_, link.constraint, dv);
+  }
+  values_[var] = value;
 }
 
 }  // namespace sightline::csp

@@ -22,6 +22,8 @@ const OptionSchema<SlsSolver::Options>& SlsSolver::Options::schema() {
               "values or partners tried per variable in the greedy pass (>= 1)", 1);
     s.integer("greedy_window", &Options::greedy_window,
               "greedy swap partners come from the next this-many variables; 0 = all later", 0);
+    s.real("placement_attempts", &Options::placement_attempts,
+           "draws per variable when placing a randomly dealt permutation group (0 = off)", 0);
     s.integer("stall_moves", &Options::stall_moves,
               "steps without progress before a restart; 0 = 10 x variables + 1000", 0);
     s.integer("restarts", &Options::restarts, "restarts before giving up (>= 0)", 0);

@@ -19,13 +19,20 @@
 // partner's value), which reads only v's side of the constraints; only the best-screened
 // partners are tried for real (improving first, else sideways).
 //
+// The all_different that makes a group is satisfied by every permutation, so the evaluator
+// is told it is constant and never follows it (one constraint fewer per move).
+//
 // Greedy start (`greedy_start`): one pass over the variables in order. A variable in conflict
-// tries `greedy_samples` values and takes the best if it lowers the score; a variable of a
-// permutation group is "placed" as in Sosic & Gu's N-queens solvers: it swaps with the first
-// of up to `greedy_samples` later partners (drawn from the next `greedy_window` ones, which
-// keeps the memory traffic local) after which it is in no conflict at all, the partner
-// taking over its conflicts until its own turn. Partners are screened by the half swap and
-// only strict improvements of v's half are tried.
+// tries `greedy_samples` values and takes the best if it lowers the score. A group whose
+// values were dealt at random (the start was not a permutation, or a restart) is rebuilt by
+// constructive placement (detail/group_placement.h: Sosic & Gu's placement, each variable
+// taking a value that adds no cost given the ones already placed, `placement_attempts` draws
+// per variable) when its constraints support partial assignments. Otherwise, and for a
+// start that already was a permutation (its structure is kept), each group variable in
+// conflict swaps with the first of up to `greedy_samples` later partners (drawn from the
+// next `greedy_window` ones, which keeps the memory traffic local) after which it is in no
+// conflict at all, the partner taking over its conflicts until its own turn. Partners are
+// screened by the half swap and only strict improvements of v's half are tried.
 //
 // Continuous and mixed problems: random-neighbourhood search. From the current point, a
 // candidate moves every variable by a Gaussian step of standard deviation radius x its
@@ -62,6 +69,8 @@ class SlsSolver : public Solver {
     std::int64_t greedy_samples = 64;  // values or partners tried per variable in that pass
     std::int64_t greedy_window = 256;  // partners come from the next this-many group
                                        // variables (cache-friendly); 0 = all later ones
+    double placement_attempts = 3.08;  // constructive placement of a randomly dealt group:
+                                       // draws per variable (Sosic & Gu's 3.08); 0 = off
     std::int64_t stall_moves = 0;      // steps without progress before a restart; 0 = auto
                                        // (10 x variables + 1000)
     // Both.

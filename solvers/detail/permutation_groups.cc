@@ -30,6 +30,7 @@ std::vector<double> allowed_values(const csp::Problem& problem, csp::VariableId 
     return c.is_hard() && c.scope().size() == 1;
   });
   if (!has_unary) return allowed;  // cheap answer for the usual case; pin() needs size 1 only
+  if (scratch.empty()) scratch = problem.default_assignment();  // first time it is needed
   const double kept = scratch[v];
   for (double value : values) {
     scratch[v] = value;
@@ -84,7 +85,7 @@ void pin(const csp::Problem& problem, PermutationGroup& group, csp::Assignment& 
 std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& problem) {
   std::vector<PermutationGroup> groups;
   std::vector<char> taken(problem.num_variables(), 0);
-  csp::Assignment scratch = problem.default_assignment();
+  csp::Assignment scratch;  // filled by allowed_values when a hard unary constraint needs it
   for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const auto* all_different = dynamic_cast<const csp::AllDifferent*>(&problem.constraint(id));
     if (!all_different || !all_different->is_hard() || !all_different->has_zero_offsets()) {
@@ -103,11 +104,14 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
     }
     if (!fits) continue;
     PermutationGroup group;
+    group.constraint = id;
     group.variables.assign(scope.begin(), scope.end());
     group.values.resize(first.size());
     for (std::size_t i = 0; i < first.size(); ++i) group.values[i] = first.value_at(i);
     for (csp::VariableId v : scope) taken[v] = 1;
-    std::sort(group.values.begin(), group.values.end());
+    if (!std::is_sorted(group.values.begin(), group.values.end())) {
+      std::sort(group.values.begin(), group.values.end());
+    }
     pin(problem, group, scratch);
     groups.push_back(std::move(group));
   }

@@ -13,12 +13,6 @@
 // there, so the search permutes only the group's free variables over the free values (node
 // consistency, done once). Pins are kept only when consistent (no value pinned twice);
 // otherwise the group has none and the search sorts the clash out by itself.
-//
-// Pinned variables: a hard unary constraint (a clue, a fixed cell) may allow one value only
-// to a group variable. Such a variable is pinned: starts put it at that value and swaps
-// leave it there, so the search moves only the group's free variables among the free
-// values (node consistency, done once). Pins are kept only when they are consistent (each
-// value pinned at most once); otherwise the group has no pins and the search sorts it out.
 #pragma once
 
 #include <utility>
@@ -29,6 +23,8 @@
 namespace sightline::solvers::detail {
 
 struct PermutationGroup {
+  csp::ConstraintId constraint = 0;        // the all_different that makes it a group: swaps
+                                           // inside the group never change its violation (0)
   std::vector<csp::VariableId> variables;  // in scope order
   std::vector<double> values;              // the common domain's values, ascending
   std::vector<csp::VariableId> free;       // the variables not pinned, in scope order

@@ -148,5 +148,28 @@ TEST(IncrementalEvaluator, InvolvementIsTheWeightedViolationOfTheVariablesConstr
   EXPECT_DOUBLE_EQ(e.involvement(2), 1.0);
 }
 
+// A constraint named constant is scored once and then left out of every delta, assign and
+// involvement: the caller promises its moves never change it. Here x != y is named
+// constant and only z moves (which it does not read): the running score must still equal
+// a full evaluation, and the deltas are those of the other constraints alone.
+TEST(IncrementalEvaluator, ConstantConstraintsStayInTheScoreButLeaveTheDeltas) {
+  const auto p = small_problem();
+  const std::vector<ConstraintId> constant = {0};  // x != y
+  IncrementalEvaluator e(*p, Assignment{1, 1, 0}, constant);
+  EXPECT_DOUBLE_EQ(e.score().hard, 1.0);    // x == y, counted once
+  EXPECT_DOUBLE_EQ(e.involvement(0), 0.0);  // x's only other constraint, the sum, holds
+  // Moving x would change x != y, but a constant constraint is not followed: the delta is
+  // the sum's alone (x 1 -> 3: 3 + 1 + 0 = 4 still holds).
+  EXPECT_DOUBLE_EQ(e.delta(0, 3).hard, 0.0);
+  for (double z : {3.0, 1.0, 2.0, 0.0}) {
+    e.assign(2, z);
+    const Score full = p->score(e.values());
+    EXPECT_DOUBLE_EQ(e.score().hard, full.hard) << "z = " << z;
+    EXPECT_DOUBLE_EQ(e.score().soft, full.soft) << "z = " << z;
+  }
+  EXPECT_THROW(IncrementalEvaluator(*p, Assignment{1, 1, 0}, std::vector<ConstraintId>{9}),
+               std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace sightline::csp
