@@ -10,11 +10,17 @@
 // ratios, which near-zero optima make harsh), frames within 1% of it, frames feasible (look-at visible,
 // clear of geometry), and the mean and p99 time per frame.
 //
-//   build/bench/solver_quality [--frames-per-scene N] [--grid-points K]
+//   build/bench/solver_quality [--frames-per-scene N] [--grid-points K] [--misses]
+//                              [--pipeline-option key=value]...
+// --misses lists the frames where the pipeline is not within 1% of the reference and why
+// (see print_miss); --pipeline-option passes an option to the pipeline ("ceres-refine.
+// alternatives=0" measures it without the octree's alternatives).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <span>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,6 +37,7 @@ using namespace sightline;
 
 struct SampledFrame {
   const camera::Scene* scene;
+  std::size_t index;  // frame number in the scene's run
   camera::CharacterState character;
   Eigen::Vector3d last_camera;
   double dt;
@@ -43,15 +50,71 @@ struct SolverStats {
   int within_1pct = 0, feasible = 0, frames = 0;
 };
 
+std::string point_text(std::span<const double> a) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", a[0], a[1], a[2]);
+  return text;
+}
+
+// One frame the pipeline missed (not within 1% of the reference): where the octree, the
+// pipeline and the reference ended, the pipeline's message, the Score along the straight
+// segment pipeline -> reference (X = infeasible: another basin behind a wall; a feasible,
+// falling profile: a stall), and the per-constraint costs of both points.
+void print_miss(const csp::Problem& problem, const SampledFrame& frame, const double* start,
+                const csp::Assignment& octree_point, const solvers::SolverResult& refined,
+                const solvers::SolverResult& reference) {
+  const csp::Score octree_score = problem.score(octree_point);
+  std::printf("miss %s frame %zu: octree %s %.4f%s | refined %s %.4f%s | reference %s %.4f | "
+              "start %s\n",
+              frame.scene->name().c_str(), frame.index, point_text(octree_point).c_str(),
+              octree_score.soft, octree_score.feasible() ? "" : " INFEASIBLE",
+              point_text(refined.best).c_str(), refined.cost(),
+              refined.feasible() ? "" : " INFEASIBLE", point_text(reference.best).c_str(),
+              reference.cost(), point_text(std::span<const double>(start, 3)).c_str());
+  std::printf("    message: %s\n    segment refined->reference:", refined.message.c_str());
+  csp::Assignment x(3);
+  for (int k = 0; k <= 20; ++k) {
+    for (int v = 0; v < 3; ++v) {
+      x[v] = refined.best[v] + k / 20.0 * (reference.best[v] - refined.best[v]);
+    }
+    const csp::Score score = problem.score(x);
+    std::printf(" %s%.3f", score.feasible() ? "" : "X", score.soft);
+  }
+  std::printf("\n");
+  const auto mine = problem.breakdown(refined.best), theirs = problem.breakdown(reference.best);
+  for (std::size_t c = 0; c < mine.size(); ++c) {
+    std::printf("    %-28s %9.4f %9.4f\n",
+                std::string(problem.constraint(mine[c].id).kind()).c_str(), mine[c].cost,
+                theirs[c].cost);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int per_scene = 30;
   int grid_points = 64;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  bool list_misses = false;
+  solvers::OptionValues pipeline_options;  // for the last solver, the pipeline
+  for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (flag == "--frames-per-scene") per_scene = std::atoi(argv[i + 1]);
-    else if (flag == "--grid-points") grid_points = std::atoi(argv[i + 1]);
+    if (flag == "--misses") {
+      list_misses = true;
+    } else if (flag == "--pipeline-option" && i + 1 < argc) {
+      try {
+        pipeline_options.insert(solvers::split_option(argv[++i]));
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "--pipeline-option: %s\n", e.what());
+        return 2;
+      }
+    } else if (flag == "--frames-per-scene" && i + 1 < argc) {
+      per_scene = std::atoi(argv[++i]);
+    } else if (flag == "--grid-points" && i + 1 < argc) {
+      grid_points = std::atoi(argv[++i]);
+    } else {
+      std::fprintf(stderr, "unknown or incomplete option '%s'\n", flag.c_str());
+      return 2;
+    }
   }
   camera::solver_registry();
   std::vector<std::string> paths;
@@ -75,7 +138,7 @@ int main(int argc, char** argv) {
       const camera::CharacterState c = scene.character_at(t);
       const double dt = std::max(t - previous, 1e-3);
       previous = t;
-      if (i % stride == stride / 2) frames.push_back({&scene, c, chase.frame().position, dt});
+      if (i % stride == stride / 2) frames.push_back({&scene, i, c, chase.frame().position, dt});
       chase.update(c, dt);
     }
   }
@@ -88,7 +151,15 @@ int main(int argc, char** argv) {
   auto reference = registry.create("grid>ceres-refine",
                                    {{"grid.points", std::to_string(grid_points)}});
   std::vector<std::unique_ptr<solvers::Solver>> solvers;
-  for (const auto& n : names) solvers.push_back(registry.create(n));
+  try {
+    for (const auto& n : names) {
+      solvers.push_back(registry.create(n, n == names.back() ? pipeline_options
+                                                             : solvers::OptionValues{}));
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
   double reference_seconds = 0;
   solvers::SolveContext context;
   context.want_breakdown = false;
@@ -101,6 +172,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const solvers::SolverResult best = reference->solve(problem.problem(), start, context);
     reference_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    csp::Assignment octree_point;
     for (std::size_t s = 0; s < solvers.size(); ++s) {
       const auto t1 = std::chrono::steady_clock::now();
       const solvers::SolverResult r = solvers[s]->solve(problem.problem(), start, context);
@@ -116,6 +188,11 @@ int main(int argc, char** argv) {
         st.cost_sum += r.cost();
         st.reference_sum += best.cost();
         if (r.cost() <= best.cost() * 1.01 + 1e-6) ++st.within_1pct;
+      }
+      if (names[s] == "occlusion-octree") octree_point = r.best;
+      if (list_misses && s + 1 == solvers.size() &&
+          !(r.feasible() && r.cost() <= best.cost() * 1.01 + 1e-6)) {
+        print_miss(problem.problem(), f, start, octree_point, r, best);
       }
     }
   }

@@ -1,5 +1,6 @@
-// ceres-refine: the objective in unbounded parameters, its adapter to Ceres, the back-off.
-// This is the one translation unit of solvers/ that includes Ceres.
+// ceres-refine: the phases, the adapter of the objective (ceres_refine_objective.cc) to
+// Ceres, the back-off, the alternatives. This is the one translation unit of solvers/ that
+// includes Ceres.
 #include "solvers/ceres_refine.h"
 
 #include <ceres/first_order_function.h>
@@ -14,151 +15,6 @@
 #include <utility>
 
 namespace sightline::solvers {
-
-namespace detail {
-
-double hard_tolerance(double hard) {
-  // Feasible stays exactly feasible (Score::feasible() is hard <= 0); an infeasible level may
-  // drift by Score::better_than's relative tolerance, so round-off is not "breaking" it more.
-  return hard <= 0 ? 0.0 : hard + 1e-12 * (1 + hard);
-}
-
-bool improves(const csp::Score& score, const csp::Score& anchor) {
-  if (anchor.feasible() && !score.feasible()) return false;
-  return score.better_than(anchor);
-}
-
-void RefinementObjective::reset(const csp::Problem& problem, std::span<const double> start,
-                                Terms terms, double smoothing, bool guard_hard,
-                                double hard_penalty) {
-  problem_ = &problem;
-  smoothing_ = smoothing;
-  guard_hard_ = guard_hard && terms == Terms::kSoft;
-  values_.assign(start.begin(), start.end());
-  free_.clear();
-  centre_.clear();
-  radius_.clear();
-  free_index_.assign(problem.num_variables(), -1);
-  for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
-    const csp::Domain& d = problem.variable(v).domain;
-    if (!d.is_continuous() || !(d.upper() > d.lower())) continue;
-    free_index_[v] = static_cast<std::int32_t>(free_.size());
-    free_.push_back(v);
-    centre_.push_back(0.5 * (d.lower() + d.upper()));
-    radius_.push_back(0.5 * (d.upper() - d.lower()));
-  }
-  terms_.clear();
-  term_weights_.clear();
-  hard_.clear();
-  std::size_t max_arity = 0;
-  double start_hard = 0;
-  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
-    const csp::Constraint& c = problem.constraint(id);
-    if (c.weight() <= 0) continue;
-    const auto scope = c.scope();
-    const bool touches_free = std::any_of(scope.begin(), scope.end(),
-                                          [&](csp::VariableId v) { return free_index_[v] >= 0; });
-    if (!touches_free) continue;  // constant while refining
-    if (c.is_hard()) {
-      hard_.push_back(id);
-      start_hard += c.weight() * c.violation(values_);
-    }
-    const bool penalised = terms == Terms::kSoftAndPenalisedHard && c.is_hard();
-    if (penalised || c.is_hard() == (terms == Terms::kHard)) {
-      terms_.push_back(id);
-      // A penalised hard term enters as hard_penalty w v^2, stored as a negative weight.
-      term_weights_.push_back(penalised ? -hard_penalty * c.weight() : c.weight());
-      max_arity = std::max(max_arity, scope.size());
-    }
-  }
-  hard_limit_ = hard_tolerance(start_hard);
-  scope_gradient_.assign(max_arity, 0.0);
-  gradient_x_.assign(free_.size(), 0.0);
-  best_u_.assign(free_.size(), 0.0);
-  best_cost_ = std::numeric_limits<double>::infinity();
-  evaluations_ = 0;
-  cap_ = 0;
-  cap_reached_ = false;
-  guard_rejections_ = 0;
-}
-
-void RefinementObjective::to_parameters(std::span<const double> values, std::span<double> u) const {
-  // u = r asin((x - c) / r), with the angle kept kNudgeRadians inside +-pi/2.
-  constexpr double kMaxAngle = 1.5707963267948966 - kNudgeRadians;
-  for (std::size_t i = 0; i < free_.size(); ++i) {
-    const double ratio = std::clamp((values[free_[i]] - centre_[i]) / radius_[i], -1.0, 1.0);
-    u[i] = radius_[i] * std::clamp(std::asin(ratio), -kMaxAngle, kMaxAngle);
-  }
-}
-
-void RefinementObjective::to_assignment(std::span<const double> u, std::span<double> values) const {
-  std::copy(values_.begin(), values_.end(), values.begin());  // fixed variables: the start
-  for (std::size_t i = 0; i < free_.size(); ++i) {
-    const csp::Domain& d = problem_->variable(free_[i]).domain;
-    // x = c + r sin(u / r); the clamp only absorbs round-off at the bounds.
-    values[free_[i]] =
-        std::clamp(centre_[i] + radius_[i] * std::sin(u[i] / radius_[i]), d.lower(), d.upper());
-  }
-}
-
-bool RefinementObjective::evaluate(std::span<const double> u, double& cost,
-                                   std::span<double> gradient) {
-  if (cap_ && evaluations_ >= cap_) {
-    cap_reached_ = true;
-    return false;
-  }
-  ++evaluations_;
-  to_assignment(u, values_);
-  if (guard_hard_ && !hard_.empty()) {
-    double hard = 0;
-    for (const csp::ConstraintId id : hard_) {
-      const csp::Constraint& c = problem_->constraint(id);
-      hard += c.weight() * c.violation(values_);
-    }
-    if (!(hard <= hard_limit_)) {
-      ++guard_rejections_;
-      return false;
-    }
-  }
-  // f = sum_c w_c smooth_c(x);  df/dx_v = sum over c with v in scope of w_c d smooth_c/dx_v.
-  double f = 0;
-  std::fill(gradient_x_.begin(), gradient_x_.end(), 0.0);
-  // A penalised hard term is p w v^2 (d/dx: 2 p w v dv/dx), with the exact violation: a
-  // hinge-shaped v = max(0, r) makes v^2 = max(0, r)^2 continuously differentiable whatever
-  // the constraint's own smooth form, and a 0/1 violation stays flat, costing nothing.
-  for (std::size_t k = 0; k < terms_.size(); ++k) {
-    const csp::Constraint& c = problem_->constraint(terms_[k]);
-    const bool squared = term_weights_[k] < 0;
-    const auto scope = c.scope();
-    const std::span<double> g(scope_gradient_.data(), scope.size());
-    const double v = smoothing_ > 0 && !squared
-                         ? c.smooth_violation_and_gradient(values_, g, smoothing_)
-                         : c.violation_and_gradient(values_, g);
-    const double w = squared ? -term_weights_[k] * v : term_weights_[k];
-    f += w * v;
-    const double slope = squared ? 2 * w : w;
-    for (std::size_t j = 0; j < scope.size(); ++j) {
-      const std::int32_t i = free_index_[scope[j]];
-      if (i >= 0) gradient_x_[i] += slope * g[j];
-    }
-  }
-  if (!std::isfinite(f)) return false;
-  cost = f;
-  // Chain rule through the sine map: df/du = df/dx cos(u / r).
-  if (!gradient.empty()) {
-    for (std::size_t i = 0; i < free_.size(); ++i) {
-      gradient[i] = gradient_x_[i] * std::cos(u[i] / radius_[i]);
-      if (!std::isfinite(gradient[i])) return false;
-    }
-  }
-  if (f < best_cost_) {
-    best_cost_ = f;
-    std::copy(u.begin(), u.end(), best_u_.begin());
-  }
-  return true;
-}
-
-}  // namespace detail
 
 namespace {
 
@@ -249,6 +105,18 @@ const OptionSchema<CeresRefineSolver::Options>& CeresRefineSolver::Options::sche
     s.real("hard_penalty", &Options::hard_penalty,
            "multiplier of hard weights in the slide phase (follows walls); 0 = no slide, >= 0",
            0.0);
+    s.integer("alternatives", &Options::alternatives,
+              "after another solver in a pipeline: also refine from up to this many of its "
+              "alternatives (other basins) and keep the best; 0..64",
+              0, 64);
+    s.integer("poll_evaluations", &Options::poll_evaluations,
+              "Score evaluations of the derivative-free poll that follows edges without a "
+              "gradient (0/1 constraints, steps); 0 = no poll",
+              0, 1'000'000'000);
+    s.real("poll_step", &Options::poll_step,
+           "the poll's first step, as a fraction of each variable's half-width, in (0, 1]");
+    s.real("poll_min_step", &Options::poll_min_step,
+           "the poll stops below this step (fraction of the half-width), in (0, poll_step]");
     return s;
   }();
   return schema;
@@ -274,6 +142,12 @@ std::string CeresRefineSolver::Options::validate() const {
   if (!std::isfinite(hard_penalty) || hard_penalty < 0) {
     return "hard_penalty must be a finite number >= 0 (0 = no slide phase)";
   }
+  if (alternatives < 0 || alternatives > 64) return "alternatives must be in [0, 64]";
+  if (poll_evaluations < 0) return "poll_evaluations must be >= 0 (0 = no poll phase)";
+  if (!(poll_step > 0 && poll_step <= 1)) return "poll_step must be in (0, 1]";
+  if (!(poll_min_step > 0 && poll_min_step <= poll_step)) {
+    return "poll_min_step must be in (0, poll_step]";
+  }
   return "";
 }
 
@@ -293,15 +167,46 @@ void CeresRefineSolver::solve_into(const csp::Problem& problem, std::span<const 
                                    const SolveContext& context, SolverResult& result) {
   Budget budget(context.limits, 1);
   max_evaluations_ = context.limits.max_evaluations;
-  anchor_.assign(start.begin(), start.end());  // a copy: `start` may alias result.best
-  anchor_score_ = problem.score(anchor_);
-  result.evaluations = 1;
+  result.evaluations = 0;
   result.iterations = 0;
   result.solutions_at_best = 0;
   result.stop = StopReason::kCompleted;
   result.message.clear();
+  result.alternatives.clear();
+  refine_from(problem, start, context, budget, result);
+  best_ = anchor_;
+  best_score_ = anchor_score_;
+  // Alternative starts (another basin, from the stage before): refine from each too and
+  // keep the best. The start's own refinement came first, so the result is still never
+  // worse than the start nor less feasible.
+  const std::size_t tries = std::min(static_cast<std::size_t>(options_.alternatives),
+                                     context.alternative_starts.size());
+  for (std::size_t i = 0; i < tries && result.stop == StopReason::kCompleted; ++i) {
+    const csp::Assignment& from = context.alternative_starts[i];
+    if (from.size() != start.size()) continue;  // not an assignment of this problem
+    result.message += "; from alternative " + std::to_string(i + 1) + ":";
+    refine_from(problem, from, context, budget, result);
+    if (detail::improves(anchor_score_, best_score_)) {
+      best_.swap(anchor_);
+      best_score_ = anchor_score_;
+    }
+  }
+  result.best = best_;
+  finish_result(problem, context, budget, result);
+  if (result.stop == StopReason::kCompleted && result.score.feasible() && result.score.soft <= 0) {
+    result.stop = StopReason::kTargetReached;
+  }
+}
+
+void CeresRefineSolver::refine_from(const csp::Problem& problem, std::span<const double> start,
+                                    const SolveContext& context, Budget& budget,
+                                    SolverResult& result) {
+  anchor_.assign(start.begin(), start.end());  // a copy: `start` may alias result.best
+  anchor_score_ = problem.score(anchor_);
+  ++result.evaluations;
   auto note = [&result](const std::string& text) {
-    result.message += (result.message.empty() ? "" : "; ") + text;
+    const bool fresh = result.message.empty() || result.message.back() == ':';
+    result.message += (result.message.empty() ? "" : fresh ? " " : "; ") + text;
   };
   auto running = [&result] { return result.stop == StopReason::kCompleted; };
 
@@ -351,11 +256,89 @@ void CeresRefineSolver::solve_into(const csp::Problem& problem, std::span<const 
         accept_along_segment(problem, result);
       }
     }
+    if (running() && options_.poll_evaluations > 0) {
+      poll_and_refine(problem, smoothing, context, budget, result);
+    }
   }
-  result.best = anchor_;
-  finish_result(problem, context, budget, result);
-  if (result.stop == StopReason::kCompleted && result.score.feasible() && result.score.soft <= 0) {
-    result.stop = StopReason::kTargetReached;
+}
+
+namespace {
+
+// The poll's view of the solver: Scores counted in the result under the solve's limits, and
+// the smooth part's gradient from the refine objective.
+class PollTarget : public detail::BoundaryPoll::Target {
+ public:
+  PollTarget(const csp::Problem& problem, detail::RefinementObjective& objective,
+             Budget& budget, std::uint64_t max_evaluations, SolverResult& result)
+      : problem_(problem), objective_(objective), budget_(budget),
+        max_evaluations_(max_evaluations), result_(result) {}
+  bool judge(std::span<const double> values, csp::Score& score) override {
+    if ((max_evaluations_ && result_.evaluations >= max_evaluations_) ||
+        budget_.exhausted(result_.evaluations, result_.iterations)) {
+      result_.stop = max_evaluations_ && result_.evaluations >= max_evaluations_
+                         ? StopReason::kEvaluationLimit
+                         : budget_.reason();
+      return false;
+    }
+    score = problem_.score(values);
+    ++result_.evaluations;
+    return true;
+  }
+  bool gradient(std::span<const double> values, std::span<double> g) override {
+    if (max_evaluations_ && result_.evaluations >= max_evaluations_) return false;
+    double cost;
+    ++result_.evaluations;
+    return objective_.evaluate_at(values, cost, g);
+  }
+
+ private:
+  const csp::Problem& problem_;
+  detail::RefinementObjective& objective_;
+  Budget& budget_;
+  std::uint64_t max_evaluations_;
+  SolverResult& result_;
+};
+
+}  // namespace
+
+void CeresRefineSolver::poll_and_refine(const csp::Problem& problem, double smoothing,
+                                        const SolveContext& context, Budget& budget,
+                                        SolverResult& result) {
+  objective_.reset(problem, anchor_, Terms::kSoft, smoothing, false);
+  if (objective_.num_terms() == 0) return;
+  // Stationary (the scaled gradient, with the components that push out of the box at an
+  // active bound removed, is ~0): a smooth optimum, no edge to follow.
+  gradient_.resize(objective_.num_parameters());
+  double cost = 0;
+  if (max_evaluations_ && result.evaluations >= max_evaluations_) return;
+  ++result.evaluations;
+  if (!objective_.evaluate_at(anchor_, cost, gradient_)) return;
+  const auto free = objective_.free_variables();
+  const auto half = objective_.half_widths();
+  double largest = 0;
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const csp::Domain& d = problem.variable(free[i]).domain;
+    const double x = anchor_[free[i]], g = gradient_[i];
+    if ((x >= d.upper() && g < 0) || (x <= d.lower() && g > 0)) continue;
+    largest = std::max(largest, std::abs(g) * half[i]);
+  }
+  if (!(largest > kStationaryGradient * (1 + std::abs(cost)))) return;
+  result.message += (result.message.empty() ? "" : "; ") + std::string("poll:");
+  detail::BoundaryPoll::Settings settings;
+  settings.initial_step = options_.poll_step;
+  settings.min_step = options_.poll_min_step;
+  settings.max_evaluations = static_cast<std::uint64_t>(options_.poll_evaluations);
+  settings.seed = context.seed;
+  PollTarget target(problem, objective_, budget, max_evaluations_, result);
+  const std::uint64_t before = result.evaluations;
+  const bool moved = poll_.run(problem, free, half, settings, target, anchor_, anchor_score_);
+  result.message += " " + std::to_string(result.evaluations - before) + " evaluations, " +
+                    (moved ? "moved" : "no better point");
+  if (!moved || result.stop != StopReason::kCompleted) return;
+  result.message += "; refine (smoothing " + detail::format_real(smoothing) + "):";
+  if (run_ceres(problem, anchor_, Terms::kSoft, smoothing, options_.guard_hard, context,
+                budget, result)) {
+    accept_along_segment(problem, result);
   }
 }
 

@@ -31,10 +31,20 @@
 //     costs nothing); its minimiser lies about lambda / (2 penalty w_h) inside the wall
 //     (lambda: the wall's Lagrange multiplier), so a restore run (1) pushes it back out, and
 //     the result is kept only if better.
+//  4. poll (poll_evaluations > 0, and only where the smooth part's projected gradient is not
+//     ~0): a derivative-free search on the true Score (ceres_refine_poll.h) that follows the
+//     edges Ceres stalls on, 0/1 hard constraints and piecewise-constant soft terms (a
+//     visible fraction), which no gradient describes; it only ever moves to better points.
+//     If it moved, one more refine round polishes the smooth part from there.
 // After each phase the true Score of its best point is compared with the best so far (the
 // anchor, initially the start); if it is not better, the segment anchor -> point is bisected
 // for the farthest point that is (backoff_steps probes); if none is, the anchor stays. So the
 // result is never worse than the start and never less feasible.
+//
+// Alternatives: after a global solver in a pipeline ("occlusion-octree>ceres-refine"), the
+// phases run from the start, then from up to `alternatives` of the previous stage's
+// alternatives (SolveContext::alternative_starts: its best points in other basins, which no
+// local method can reach across the walls between them), and the best result is kept.
 //
 // Boxes: Ceres' GradientProblem is unconstrained, so each free variable is written as
 //   x = c + r sin(u / r),  c = (lo + hi) / 2,  r = (hi - lo) / 2,  u unbounded,
@@ -52,6 +62,7 @@
 #include <string>
 #include <vector>
 
+#include "solvers/ceres_refine_poll.h"
 #include "solvers/options.h"
 #include "solvers/solver.h"
 
@@ -86,6 +97,9 @@ class RefinementObjective {
 
   // Number of free variables (the dimension of u).
   std::size_t num_parameters() const { return free_.size(); }
+  // The free variables, in id order, and the half-widths of their intervals.
+  std::span<const csp::VariableId> free_variables() const { return free_; }
+  std::span<const double> half_widths() const { return radius_; }
   // Number of constraints in f.
   std::size_t num_terms() const { return terms_.size(); }
   // u of the free variables of `values` (nudged off the bounds).
@@ -98,6 +112,11 @@ class RefinementObjective {
   // the start, or f is not finite. Counts one evaluation per call that computes anything.
   bool evaluate(std::span<const double> u, double& cost, std::span<double> gradient);
 
+  // f and df/dx (over the free variables, in their order) at an assignment that differs from
+  // the start only in free variables; never guarded, not recorded as a best point. Counts one
+  // evaluation; false as evaluate() when capped or not finite.
+  bool evaluate_at(std::span<const double> values, double& cost, std::span<double> gradient_x);
+
   // 0 = no cap. Calls past the cap return false and set cap_reached().
   void set_evaluation_cap(std::uint64_t cap) { cap_ = cap; }
   bool cap_reached() const { return cap_reached_; }
@@ -109,6 +128,9 @@ class RefinementObjective {
   double best_cost() const { return best_cost_; }
 
  private:
+  // f and gradient_x_ at values_; false when f is not finite.
+  bool smooth_cost(double& cost);
+
   const csp::Problem* problem_ = nullptr;
   std::vector<csp::VariableId> free_;     // free variables, in id order
   std::vector<std::int32_t> free_index_;  // variable id -> index in free_, or -1
@@ -152,6 +174,13 @@ class CeresRefineSolver : public Solver {
     bool restore_feasibility = true;  // phase 1 from an infeasible start
     // p of the slide phase's penalty p w v^2 on hard constraints; 0 = no slide phase.
     double hard_penalty = 1000;
+    // In a pipeline, refine also from up to this many of the previous stage's alternatives
+    // (SolverResult::alternatives: its best points in other basins) and keep the best.
+    std::int64_t alternatives = 2;
+    // The poll phase (ceres_refine_poll.h): at most this many Score evaluations; 0 = none.
+    std::int64_t poll_evaluations = 300;
+    double poll_step = 0.05;       // its first step, as a fraction of each half-width
+    double poll_min_step = 5e-4;   // it stops below this step (same units)
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;
@@ -161,12 +190,23 @@ class CeresRefineSolver : public Solver {
   std::string name() const override { return name_; }
   // Needs at least one continuous variable with a non-empty interval.
   std::string unsuitable_reason(const csp::Problem& problem) const override;
+  std::size_t alternatives_wanted() const override {
+    return static_cast<std::size_t>(options_.alternatives);
+  }
   void solve_into(const csp::Problem& problem, std::span<const double> start,
                   const SolveContext& context, SolverResult& result) override;
   const Options& options() const { return options_; }
 
  private:
   using Terms = detail::RefinementObjective::Terms;
+  // The phases below from one start; leaves the best point in anchor_ (never worse than the
+  // start, nor less feasible) and adds to the result's counts, stop and message.
+  void refine_from(const csp::Problem& problem, std::span<const double> start,
+                   const SolveContext& context, Budget& budget, SolverResult& result);
+  // The poll is skipped where max_i |df/dx_i| (half-width_i), over the components that do not
+  // push out of the box at an active bound, is at most this times (1 + |f|): the refine
+  // rounds ended on a smooth optimum, with no edge to follow.
+  static constexpr double kStationaryGradient = 1e-6;
   // One Ceres run from `from` over `terms`; leaves its best point in candidate_ and returns
   // false when it evaluated nothing (a limit reached, no term). Updates counts, stop, message.
   bool run_ceres(const csp::Problem& problem, std::span<const double> from, Terms terms,
@@ -182,14 +222,22 @@ class CeresRefineSolver : public Solver {
   // Makes candidate_ the anchor if it beats it, else the best of the bisection probes of
   // anchor -> candidate that does. Returns whether the anchor moved.
   bool accept_along_segment(const csp::Problem& problem, SolverResult& result);
+  // Phase 4: the derivative-free poll from the anchor, then one more refine round if it
+  // moved. Skipped where the smooth part is stationary (nothing for the poll to follow).
+  void poll_and_refine(const csp::Problem& problem, double smoothing,
+                       const SolveContext& context, Budget& budget, SolverResult& result);
 
   std::string name_;
   Options options_;
   detail::RefinementObjective objective_;
+  detail::BoundaryPoll poll_;
+  std::vector<double> gradient_;       // scratch, df/dx over the free variables
   std::uint64_t max_evaluations_ = 0;  // the current solve's limit (0 = none)
   std::vector<double> u_;              // Ceres' parameters
   csp::Assignment anchor_;             // best point so far, never worse than the start
   csp::Score anchor_score_;
+  csp::Assignment best_;  // the best over the start and the alternatives refined
+  csp::Score best_score_;
   csp::Assignment candidate_;  // a phase's best point
   csp::Assignment inside_;     // the slide phase's point, before it is pushed out
   csp::Assignment probe_;      // a bisection probe

@@ -14,6 +14,10 @@ std::string Pipeline::unsuitable_reason(const csp::Problem& problem) const {
   return "";
 }
 
+std::size_t Pipeline::alternatives_wanted() const {
+  return stages_.empty() ? 0 : stages_.front()->alternatives_wanted();
+}
+
 void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> start,
                           const SolveContext& context, SolverResult& result) {
   Budget budget(context.limits, 1);
@@ -23,8 +27,10 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
   result.iterations = 0;
   result.stop = StopReason::kCompleted;
   result.message.clear();
+  result.alternatives.clear();
   SolveContext stage_context = context;
   stage_context.want_breakdown = false;
+  handed_over_.clear();
   for (std::size_t i = 0; i < stages_.size(); ++i) {
     // Each stage gets what is left of the pipeline's limits.
     SolveLimits& left = stage_context.limits;
@@ -39,7 +45,17 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
       }
     }
     stage_context.seed = context.seed + i;
+    const bool last = i + 1 == stages_.size();
+    stage_context.alternatives_wanted =
+        last ? context.alternatives_wanted : stages_[i + 1]->alternatives_wanted();
+    if (i > 0) stage_context.alternative_starts = handed_over_;
+    stage_result_.alternatives.clear();  // solvers that do not explore leave it as it is
     stages_[i]->solve_into(problem, result.best, stage_context, stage_result_);
+    if (stage_result_.alternatives.size() > stage_context.alternatives_wanted) {
+      stage_result_.alternatives.resize(stage_context.alternatives_wanted);
+    }
+    handed_over_.swap(stage_result_.alternatives);
+    if (last) result.alternatives = handed_over_;
     result.evaluations += stage_result_.evaluations;
     result.iterations += stage_result_.iterations;
     if (stage_result_.score.better_than(result.score)) {

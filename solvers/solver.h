@@ -29,6 +29,14 @@ struct SolveContext {
   std::uint64_t seed = 1;
   SolveLimits limits;
   bool want_breakdown = true;  // fill SolverResult::breakdown (costs an evaluation)
+  // Alternatives (see SolverResult::alternatives): how many a solver should hand over, 0 =
+  // none. A pipeline sets it to what its next stage asks for (Solver::alternatives_wanted),
+  // and a global solver that explores may then spend extra work to find them.
+  std::size_t alternatives_wanted = 0;
+  // Other start points besides `start`, handed over by the previous stage of a pipeline (its
+  // alternatives), best first; a local method may refine from them too. Not owned: valid
+  // during the solve only. Each has one value per variable.
+  std::span<const csp::Assignment> alternative_starts;
 };
 
 enum class StopReason {
@@ -50,6 +58,13 @@ struct SolverResult {
   // Exhaustive solvers only (grid, bnb when asked to count): how many assignments reach the
   // best score. 0 when the solver does not count.
   std::uint64_t solutions_at_best = 0;
+  // Up to SolveContext::alternatives_wanted other good assignments, best first, each in
+  // another region of the search space than `best` and than each other (another side of an
+  // obstacle, another basin), for a local method that follows to refine from besides
+  // `best`: a local method cannot cross the walls between basins, so a global method that
+  // has seen several is the one to say where they are. Empty when not asked for, or when
+  // the solver does not explore (most leave it empty).
+  std::vector<csp::Assignment> alternatives;
   double wall_seconds = 0;
   StopReason stop = StopReason::kCompleted;
   std::string message;  // solver-specific detail, may be empty
@@ -67,6 +82,9 @@ class Solver {
   virtual std::string name() const = 0;
   // Empty when this solver can work on `problem`, else why not ("needs discrete domains").
   virtual std::string unsuitable_reason(const csp::Problem& problem) const;
+  // How many alternative starts (SolveContext::alternative_starts) this solver would refine
+  // from when it follows another in a pipeline; 0 (the default) = it uses only `start`.
+  virtual std::size_t alternatives_wanted() const { return 0; }
   // Fills `result` (its vectors are reused, so a per-frame caller need not allocate).
   virtual void solve_into(const csp::Problem& problem, std::span<const double> start,
                           const SolveContext& context, SolverResult& result) = 0;

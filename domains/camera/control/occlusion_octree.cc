@@ -1,5 +1,6 @@
 #include "domains/camera/control/occlusion_octree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -92,6 +93,31 @@ void OcclusionOctreeSolver::solve_into(const csp::Problem& problem, std::span<co
       }
     }
   }
+  // Alternatives, only when asked (see the header): the search again from each octant of
+  // the first cube, under the orientation the main search settled on. The best stays the
+  // cheapest of all, so asking never makes it worse.
+  explored_.clear();
+  const double first_half = search.first_half_size(options_.initial_size);
+  if (context.alternatives_wanted > 0 && best.valid) {
+    explored_.push_back(best);
+    OctreeSettings octant = settings;
+    octant.initial_half_size = 0.5 * first_half;
+    const double q = 0.5 * first_half;
+    for (int child = 0; child < 8; ++child) {
+      if (budget.exhausted(search.evaluations(), passes_run)) {
+        result.stop = budget.reason();
+        break;
+      }
+      const Eigen::Vector3d offset((child & 1) ? q : -q, (child & 2) ? q : -q,
+                                   (child & 4) ? q : -q);
+      const Candidate found = search.run(p0 + offset, octant);
+      passes_run += static_cast<std::uint64_t>(octant.passes);
+      if (found.valid) explored_.push_back(found);
+    }
+    std::stable_sort(explored_.begin(), explored_.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+    best = explored_.front();
+  }
   result.best.assign({p0.x(), p0.y(), p0.z()});
   result.message.clear();
   if (best.valid) {
@@ -102,6 +128,19 @@ void OcclusionOctreeSolver::solve_into(const csp::Problem& problem, std::span<co
     }
   } else {
     result.message = "no visible candidate in the search box";
+  }
+  // The alternatives: the next cheapest runs' bests, each in another region than the best
+  // and than those already chosen.
+  result.alternatives.clear();
+  const double separation = 0.25 * first_half;
+  for (std::size_t i = 1; i < explored_.size() &&
+                          result.alternatives.size() < context.alternatives_wanted; ++i) {
+    const Eigen::Vector3d& p = explored_[i].position;
+    bool distinct = (p - best.position).norm() >= separation;
+    for (const csp::Assignment& a : result.alternatives) {
+      distinct = distinct && (p - Eigen::Vector3d(a[0], a[1], a[2])).norm() >= separation;
+    }
+    if (distinct) result.alternatives.push_back({p.x(), p.y(), p.z()});
   }
   result.evaluations = search.evaluations();
   result.iterations = passes_run;

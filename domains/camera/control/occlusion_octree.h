@@ -12,12 +12,27 @@
 //      camera -> character direction) are tried, and kept if cheaper and visible.
 // The smooth move toward the result, the cuts and the area adaptation are the controller's
 // job (ChaseCamera), as they are for every solver. Only works on camera problems.
+//
+// Alternatives (only when a later pipeline stage asks, SolveContext::alternatives_wanted;
+// the chase camera's per-frame path never does, so it pays nothing): the passes above are
+// greedy, they commit to the best octant of the first cube after 8 candidates, and the
+// camera's cost landscape is cut by occluders into basins a local refiner cannot cross
+// (bench/solver_quality: on the frames the pipeline missed, the optimum lay on another side
+// of an occluder). So the search is also run from each octant of the first cube (half its
+// size, under the orientation the main search settled on), and every run's best is a
+// candidate, as is the main search's result (after its probes). The cheapest becomes
+// `best`, so asking never makes it worse; the next cheapest ones, skipping any closer than a
+// quarter of the first cube's half-size to the best or to one already chosen (the same
+// basin), are the alternatives. 8 more runs of `passes` x 8 candidates each: about 9 times
+// the work of a plain solve.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "domains/camera/control/camera_problem_view.h"
+#include "domains/camera/control/octree_search.h"
 #include "solvers/options.h"
 #include "solvers/solver.h"
 
@@ -47,6 +62,7 @@ class OcclusionOctreeSolver : public solvers::Solver {
   std::string name_;
   Options options_;
   CameraProblemViewCache views_;
+  std::vector<Candidate> explored_;  // scratch: the runs' bests when alternatives are asked
 };
 
 }  // namespace sightline::camera
