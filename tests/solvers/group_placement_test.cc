@@ -120,6 +120,20 @@ TEST(GroupPlacement, SlsSolvesQueensWhetherPlacementRunsOrNot) {
   }
 }
 
+TEST(GroupPlacement, SlsWithPlacementGivesTheSameResultForTheSameSeed) {
+  const auto problem = queens(300);
+  auto sls = SolverRegistry::global().create("sls");
+  SolveContext context;
+  context.seed = 11;
+  const SolverResult a = sls->solve(*problem, problem->default_assignment(), context);
+  const SolverResult b = sls->solve(*problem, problem->default_assignment(), context);
+  EXPECT_EQ(a.best, b.best);
+  EXPECT_EQ(a.evaluations, b.evaluations);
+  context.seed = 12;
+  const SolverResult c = sls->solve(*problem, problem->default_assignment(), context);
+  EXPECT_NE(a.best, c.best);  // the seed drives the placement: another seed, another solution
+}
+
 TEST(GroupPlacement, SlsKeepsAStartThatIsAlreadyASolution) {
   // A solution of 8-queens: placement must not re-deal a start that is a permutation.
   const csp::Assignment solution = {0, 4, 7, 5, 2, 6, 1, 3};
