@@ -13,8 +13,7 @@ namespace {
 // (smoothing = 0) or smooth_abs(r, smoothing).
 template <int N, class Term>
 double jet_evaluate(const Term& term, std::span<const csp::VariableId> scope,
-                    std::span<const double> values, std::span<double> gradient,
-                    double smoothing) {
+                    std::span<const double> values, std::span<double> gradient, double smoothing) {
   using Jet = ceres::Jet<double, N>;
   Jet x[N];
   for (int i = 0; i < N; ++i) x[i] = Jet(values[scope[i]], i);
@@ -26,44 +25,22 @@ double jet_evaluate(const Term& term, std::span<const csp::VariableId> scope,
 
 }  // namespace
 
-double HeightConstraint::violation_and_gradient(std::span<const double> values,
-                                                std::span<double> gradient) const {
-  return jet_evaluate<1>(term(), scope(), values, gradient, 0);
+template <class Derived, int N>
+double AbsTermConstraint<Derived, N>::violation_and_gradient(std::span<const double> values,
+                                                             std::span<double> gradient) const {
+  return jet_evaluate<N>(static_cast<const Derived&>(*this).term(), scope(), values, gradient, 0);
 }
-double HeightConstraint::smooth_violation_and_gradient(std::span<const double> values,
-                                                       std::span<double> gradient,
-                                                       double smoothing) const {
-  return jet_evaluate<1>(term(), scope(), values, gradient, smoothing);
-}
-
-double DistanceConstraint::violation_and_gradient(std::span<const double> values,
-                                                  std::span<double> gradient) const {
-  return jet_evaluate<2>(term(), scope(), values, gradient, 0);
-}
-double DistanceConstraint::smooth_violation_and_gradient(std::span<const double> values,
-                                                         std::span<double> gradient,
-                                                         double smoothing) const {
-  return jet_evaluate<2>(term(), scope(), values, gradient, smoothing);
+template <class Derived, int N>
+double AbsTermConstraint<Derived, N>::smooth_violation_and_gradient(std::span<const double> values,
+                                                                    std::span<double> gradient,
+                                                                    double smoothing) const {
+  return jet_evaluate<N>(static_cast<const Derived&>(*this).term(), scope(), values, gradient,
+                         smoothing);
 }
 
-double OrientationConstraint::violation_and_gradient(std::span<const double> values,
-                                                     std::span<double> gradient) const {
-  return jet_evaluate<2>(term(), scope(), values, gradient, 0);
-}
-double OrientationConstraint::smooth_violation_and_gradient(std::span<const double> values,
-                                                            std::span<double> gradient,
-                                                            double smoothing) const {
-  return jet_evaluate<2>(term(), scope(), values, gradient, smoothing);
-}
-
-double FrameCoherenceConstraint::violation_and_gradient(std::span<const double> values,
-                                                        std::span<double> gradient) const {
-  return jet_evaluate<3>(term(), scope(), values, gradient, 0);
-}
-double FrameCoherenceConstraint::smooth_violation_and_gradient(std::span<const double> values,
-                                                               std::span<double> gradient,
-                                                               double smoothing) const {
-  return jet_evaluate<3>(term(), scope(), values, gradient, smoothing);
-}
+template class AbsTermConstraint<HeightConstraint, 1>;
+template class AbsTermConstraint<DistanceConstraint, 2>;
+template class AbsTermConstraint<OrientationConstraint, 2>;
+template class AbsTermConstraint<FrameCoherenceConstraint, 3>;
 
 }  // namespace sightline::camera

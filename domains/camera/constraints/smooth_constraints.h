@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "csp/constraint.h"
 #include "domains/camera/constraints/cost_terms.h"
@@ -17,18 +19,19 @@
 
 namespace sightline::camera {
 
-// cost = weight x |desired_height - (cam_y - char_y)|; scope (cam_y).
-class HeightConstraint : public csp::Constraint {
+// What the four share: violation = |term(the scope's values)|, with the functor that
+// Derived::term() builds from this frame's parameters, and exact gradients (plain and
+// smoothed) from the same functor with ceres::Jet. N is the scope's size. The gradient
+// members are defined and instantiated for the four in gradients.cc.
+template <class Derived, int N>
+class AbsTermConstraint : public csp::Constraint {
  public:
-  HeightConstraint(csp::VariableId cam_y, const FrameParameters& frame, double weight)
-      : Constraint({cam_y}, weight), frame_(frame) {}
-  std::string_view kind() const override { return "camera.height"; }
-  terms::HeightTerm term() const {
-    return {frame_.char_y.value(), frame_.desired_height.value()};
-  }
+  AbsTermConstraint(std::vector<csp::VariableId> scope, const FrameParameters& frame, double weight)
+      : Constraint(std::move(scope), weight), frame_(frame) {}
   double violation(std::span<const double> values) const override {
-    const double y = values[scope()[0]];
-    return std::abs(term()(&y));
+    double x[N];
+    for (int i = 0; i < N; ++i) x[i] = values[scope()[i]];
+    return std::abs(static_cast<const Derived&>(*this).term()(x));
   }
   bool has_exact_gradient() const override { return true; }
   double violation_and_gradient(std::span<const double> values,
@@ -36,84 +39,58 @@ class HeightConstraint : public csp::Constraint {
   double smooth_violation_and_gradient(std::span<const double> values, std::span<double> gradient,
                                        double smoothing) const override;
 
- private:
+ protected:
   FrameParameters frame_;
+};
+
+// cost = weight x |desired_height - (cam_y - char_y)|; scope (cam_y).
+class HeightConstraint : public AbsTermConstraint<HeightConstraint, 1> {
+ public:
+  HeightConstraint(csp::VariableId cam_y, const FrameParameters& frame, double weight)
+      : AbsTermConstraint({cam_y}, frame, weight) {}
+  std::string_view kind() const override { return "camera.height"; }
+  terms::HeightTerm term() const { return {frame_.char_y.value(), frame_.desired_height.value()}; }
 };
 
 // cost = weight x |desired_distance - horizontal distance(camera, character)|;
 // scope (cam_x, cam_z).
-class DistanceConstraint : public csp::Constraint {
+class DistanceConstraint : public AbsTermConstraint<DistanceConstraint, 2> {
  public:
   DistanceConstraint(csp::VariableId cam_x, csp::VariableId cam_z, const FrameParameters& frame,
                      double weight)
-      : Constraint({cam_x, cam_z}, weight), frame_(frame) {}
+      : AbsTermConstraint({cam_x, cam_z}, frame, weight) {}
   std::string_view kind() const override { return "camera.distance"; }
   terms::DistanceTerm term() const {
     return {frame_.char_x.value(), frame_.char_z.value(), frame_.desired_distance.value()};
   }
-  double violation(std::span<const double> values) const override {
-    const double xz[2] = {values[scope()[0]], values[scope()[1]]};
-    return std::abs(term()(xz));
-  }
-  bool has_exact_gradient() const override { return true; }
-  double violation_and_gradient(std::span<const double> values,
-                                std::span<double> gradient) const override;
-  double smooth_violation_and_gradient(std::span<const double> values, std::span<double> gradient,
-                                       double smoothing) const override;
-
- private:
-  FrameParameters frame_;
 };
 
 // cost = weight x |desired_orientation - angle(facing, camera -> character)| in degrees;
 // scope (cam_x, cam_z).
-class OrientationConstraint : public csp::Constraint {
+class OrientationConstraint : public AbsTermConstraint<OrientationConstraint, 2> {
  public:
-  OrientationConstraint(csp::VariableId cam_x, csp::VariableId cam_z,
-                        const FrameParameters& frame, double weight)
-      : Constraint({cam_x, cam_z}, weight), frame_(frame) {}
+  OrientationConstraint(csp::VariableId cam_x, csp::VariableId cam_z, const FrameParameters& frame,
+                        double weight)
+      : AbsTermConstraint({cam_x, cam_z}, frame, weight) {}
   std::string_view kind() const override { return "camera.orientation"; }
   terms::OrientationTerm term() const {
     return {frame_.char_x.value(), frame_.char_z.value(), frame_.char_yaw.value(),
             frame_.desired_orientation.value()};
   }
-  double violation(std::span<const double> values) const override {
-    const double xz[2] = {values[scope()[0]], values[scope()[1]]};
-    return std::abs(term()(xz));
-  }
-  bool has_exact_gradient() const override { return true; }
-  double violation_and_gradient(std::span<const double> values,
-                                std::span<double> gradient) const override;
-  double smooth_violation_and_gradient(std::span<const double> values, std::span<double> gradient,
-                                       double smoothing) const override;
-
- private:
-  FrameParameters frame_;
 };
 
-// cost = weight x |camera - last camera| / dt; scope (cam_x, cam_y, cam_z).
-class FrameCoherenceConstraint : public csp::Constraint {
+// cost = weight x |camera - last camera| / dt (the term is a length, so |r| = r);
+// scope (cam_x, cam_y, cam_z).
+class FrameCoherenceConstraint : public AbsTermConstraint<FrameCoherenceConstraint, 3> {
  public:
   FrameCoherenceConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
                            const FrameParameters& frame, double weight)
-      : Constraint({cam_x, cam_y, cam_z}, weight), frame_(frame) {}
+      : AbsTermConstraint({cam_x, cam_y, cam_z}, frame, weight) {}
   std::string_view kind() const override { return "camera.frame_coherence"; }
   terms::FrameCoherenceTerm term() const {
     return {frame_.last_cam_x.value(), frame_.last_cam_y.value(), frame_.last_cam_z.value(),
             frame_.dt.value()};
   }
-  double violation(std::span<const double> values) const override {
-    const double p[3] = {values[scope()[0]], values[scope()[1]], values[scope()[2]]};
-    return term()(p);
-  }
-  bool has_exact_gradient() const override { return true; }
-  double violation_and_gradient(std::span<const double> values,
-                                std::span<double> gradient) const override;
-  double smooth_violation_and_gradient(std::span<const double> values, std::span<double> gradient,
-                                       double smoothing) const override;
-
- private:
-  FrameParameters frame_;
 };
 
 }  // namespace sightline::camera
