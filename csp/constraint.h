@@ -43,9 +43,9 @@ class IncrementalState {
   // How much of the current violation the variable at `position` takes part in (0 when it is
   // in no conflict). Local search uses it to pick variables worth moving.
   virtual double involvement(std::span<const double> values, std::size_t position) = 0;
-  // The violation of the assignment the state was made from, when building the state
-  // computed it anyway (saves the owner a second full evaluation); nullopt otherwise.
-  virtual std::optional<double> initial_violation() const { return std::nullopt; }
+  // The violation of the assignment the state follows, for states that keep it up to date
+  // anyway (it saves the owner a full evaluation when the state is built); nullopt otherwise.
+  virtual std::optional<double> current_violation() const { return std::nullopt; }
 
   // Partial assignments (optional). Constructive starts build an assignment one variable at
   // a time and judge each choice against the variables already placed only (Sosic & Gu's

@@ -27,7 +27,7 @@ void IncrementalEvaluator::resynchronise() {
   for (ConstraintId id = 0; id < m; ++id) {
     const Constraint& c = problem_->constraint(id);
     if (!constant_[id]) states_[id] = c.make_incremental_state(values_);
-    const auto known = states_[id] ? states_[id]->initial_violation() : std::nullopt;
+    const auto known = states_[id] ? states_[id]->current_violation() : std::nullopt;
     violations_[id] = known ? *known : c.violation(values_);
     const double w = c.weight() * violations_[id];
     (c.is_hard() ? total_.hard : total_.soft) += w;
@@ -118,11 +118,15 @@ bool IncrementalEvaluator::can_retract(VariableId var) const {
   return true;
 }
 
-void IncrementalEvaluator::retract(VariableId var) {
+void IncrementalEvaluator::require_retractable(VariableId var) const {
   if (!can_retract(var)) {
     throw std::logic_error("IncrementalEvaluator::retract: variable " + std::to_string(var) +
                            " has a constraint without partial-assignment support");
   }
+}
+
+void IncrementalEvaluator::retract(VariableId var) {
+  require_retractable(var);
   for (const Incidence& link : links(var)) {
     const double dv = tracked_[link.constraint].state->retract(values_, link.position);
     violations_[link.constraint] += dv;
@@ -131,9 +135,7 @@ void IncrementalEvaluator::retract(VariableId var) {
 }
 
 void IncrementalEvaluator::retract(std::span<const VariableId> vars) {
-  for (VariableId v : vars) {
-    if (!can_retract(v)) retract(v);  // throws, naming the variable
-  }
+  for (VariableId v : vars) require_retractable(v);
   hits_.assign(problem_->num_constraints(), 0);
   for (VariableId v : vars) {
     for (const Incidence& link : links(v)) ++hits_[link.constraint];

@@ -77,6 +77,8 @@ class IncrementalEvaluator {
     bool hard;
     bool partial;  // the state supports partial assignments
   };
+  // Throws std::logic_error unless can_retract(var).
+  void require_retractable(VariableId var) const;
   std::span<const Incidence> links(VariableId var) const {
     return {links_.data() + first_link_[var], links_.data() + first_link_[var + 1]};
   }

@@ -64,10 +64,9 @@ class DenseState final : public IncrementalState {
       slots_[i].index = static_cast<Shift>(index(i, values[scope[i]]));
       violation_ += join_delta(measure_, counts_[static_cast<std::size_t>(slots_[i].index)]++);
     }
-    initial_violation_ = violation_;
   }
 
-  std::optional<double> initial_violation() const override { return initial_violation_; }
+  std::optional<double> current_violation() const override { return violation_; }
 
   double delta(std::span<const double>, std::size_t position, double new_value) override {
     const auto a = static_cast<std::size_t>(slots_[position].index);
@@ -130,8 +129,7 @@ class DenseState final : public IncrementalState {
   AllDifferent::Measure measure_;
   std::vector<std::int32_t> counts_;
   std::vector<Slot> slots_;
-  double violation_ = 0;  // of the variables present, kept up to date for retract_all
-  double initial_violation_ = 0;
+  double violation_ = 0;  // of the variables present, kept up to date
 };
 
 // True when every offset - lo, and the range size, fit in 32 bits.

@@ -84,19 +84,16 @@ void DiscreteSearch::shuffle_group(const PermutationGroup& g, csp::Assignment& v
   }
 }
 
-bool DiscreteSearch::will_place(std::size_t i) const {
-  return dealt_[i] && options_.greedy_start && options_.placement_attempts > 0 &&
-         can_place_group(*evaluator_, groups_[i]);
-}
-
 void DiscreteSearch::begin_dealt_run(csp::Assignment values) {
   begin_run(std::move(values));
+  const bool placement_on = options_.greedy_start && options_.placement_attempts > 0;
   bool shuffled = false;
   csp::Assignment copy;
   for (std::size_t i = 0; i < groups_.size(); ++i) {
-    if (!dealt_[i] || will_place(i)) continue;
+    if (!dealt_[i] || (placement_on && can_place_group(*evaluator_, groups_[i]))) continue;
     if (!shuffled) copy = evaluator_->values();
     shuffle_group(groups_[i], copy);
+    dealt_[i] = 0;  // dealt at random now: nothing left for placement to do
     shuffled = true;
   }
   if (shuffled) begin_run(std::move(copy));
@@ -197,7 +194,8 @@ void DiscreteSearch::greedy_pass() {
   }
   for (std::size_t i = 0; i < groups_.size(); ++i) {
     const PermutationGroup& g = groups_[i];
-    if (will_place(i)) {
+    if (dealt_[i]) {
+      dealt_[i] = 0;
       if (out_of_budget()) return;
       best_.materialise(evaluator_->values());  // placement's changes are not logged
       const PlacementReport placement =

@@ -55,11 +55,9 @@ class DiscreteSearch {
 
   void shuffle_group(const PermutationGroup& g, csp::Assignment& values);
 
-  // Constructive placement will re-deal group i at the greedy start.
-  bool will_place(std::size_t i) const;
-
-  // begin_run, after which the freshly dealt groups that placement will not re-deal are
-  // shuffled (and the evaluator rebuilt on them).
+  // begin_run, after which the freshly dealt groups that placement will not re-deal (it is
+  // off, or their constraints cannot retract) are shuffled, the evaluator rebuilt on them,
+  // and their dealt_ mark cleared: the marks left are the groups placement will re-deal.
   void begin_dealt_run(csp::Assignment values);
 
   void randomise(csp::Assignment& values);
@@ -160,7 +158,7 @@ class DiscreteSearch {
   std::vector<csp::VariableId> list_;                    // variables believed to be in conflict
   BreakoutWeights breakout_;                             // small groups' swaps
   std::vector<csp::ConstraintId> constant_;              // the groups' own all_differents
-  std::vector<char> dealt_;   // per group: its values were dealt anew this run
+  std::vector<char> dealt_;   // per group: dealt in order this run, for placement to re-deal
   std::vector<char> seen_;    // is_permutation's marks
   std::vector<double> pool_;  // place_group's scratch
   std::vector<char> listed_;

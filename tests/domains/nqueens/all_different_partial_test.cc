@@ -124,6 +124,46 @@ TEST(AllDifferentPartial, RetractAndPlaceAgreeWithACountOfThePresentVariables) {
   }
 }
 
+// A dense state keeps its violation up to date (the evaluator reads it instead of a full
+// evaluation when it builds the state): after every commit, retract and place it must equal
+// the count of the variables present.
+TEST(AllDifferentPartial, DenseStateKeepsItsCurrentViolation) {
+  std::mt19937_64 random(9);
+  for (Measure measure : {Measure::kVariables, Measure::kDecomposition}) {
+    const std::size_t n = 10;
+    Problem p;
+    std::vector<VariableId> scope;
+    for (std::size_t i = 0; i < n; ++i) {
+      scope.push_back(p.add_variable("x" + std::to_string(i), Domain::integer_range(0, 5)));
+    }
+    const std::vector<double> offsets(n, 0.0);
+    const AllDifferent c(scope, offsets, measure, 1.0, false,
+                         key_range_from_domains(p, scope, offsets));
+    Assignment values(n);
+    for (double& v : values) v = static_cast<double>(random() % 6);
+    const auto state = c.make_incremental_state(values);
+    std::vector<char> present(n, 1);
+    for (int step = 0; step < 400; ++step) {
+      const std::size_t i = random() % n;
+      const double value = static_cast<double>(random() % 6);
+      if (!present[i]) {
+        state->place(values, i, value);
+        values[i] = value;
+        present[i] = 1;
+      } else if (step % 4 == 0) {
+        state->retract(values, i);
+        present[i] = 0;
+      } else {
+        state->commit(values, i, value);
+        values[i] = value;
+      }
+      const auto kept = state->current_violation();
+      ASSERT_TRUE(kept.has_value());
+      ASSERT_DOUBLE_EQ(*kept, present_violation(values, present, offsets, measure)) << step;
+    }
+  }
+}
+
 TEST(AllDifferentPartial, AVariableWithAConstraintThatCannotRetractIsRefused) {
   Problem p;
   const VariableId x = p.add_variable("x", Domain::integer_range(0, 3));
