@@ -8,7 +8,8 @@ namespace sightline::csp {
 
 namespace {
 [[noreturn]] void partial_unsupported() {
-  throw std::logic_error("this constraint's incremental state does not support partial assignments");
+  throw std::logic_error(
+      "this constraint's incremental state does not support partial assignments");
 }
 }  // namespace
 
@@ -23,6 +24,12 @@ double IncrementalState::place_delta(std::span<const double>, std::size_t, doubl
 }
 void IncrementalState::place(std::span<const double>, std::size_t, double) {
   partial_unsupported();
+}
+double IncrementalState::place_free(std::span<const double> values, std::size_t position,
+                                    double new_value) {
+  const double change = place_delta(values, position, new_value);
+  place(values, position, new_value);
+  return change;
 }
 
 Constraint::Constraint(std::vector<VariableId> scope, double weight, bool hard)

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -35,11 +36,9 @@ class IncrementalState {
   virtual ~IncrementalState() = default;
   // Change in violation if the variable at `position` in the scope took `new_value`.
   // `values` is the whole current assignment, indexed by VariableId.
-  virtual double delta(std::span<const double> values, std::size_t position,
-                       double new_value) = 0;
+  virtual double delta(std::span<const double> values, std::size_t position, double new_value) = 0;
   // The variable at `position` is about to take `new_value`.
-  virtual void commit(std::span<const double> values, std::size_t position,
-                      double new_value) = 0;
+  virtual void commit(std::span<const double> values, std::size_t position, double new_value) = 0;
   // How much of the current violation the variable at `position` takes part in (0 when it is
   // in no conflict). Local search uses it to pick variables worth moving.
   virtual double involvement(std::span<const double> values, std::size_t position) = 0;
@@ -69,6 +68,33 @@ class IncrementalState {
   // The retracted variable at `position` comes back at `new_value` (the owner then sets it
   // in the assignment).
   virtual void place(std::span<const double> values, std::size_t position, double new_value);
+  // place() for a value the caller has found does not raise the violation (place_delta
+  // <= 0); returns the change. The default is place_delta then place; kinds override it when
+  // knowing this is cheaper (all_different: the key was free, so its count goes from 0 to 1,
+  // which can wait).
+  virtual double place_free(std::span<const double> values, std::size_t position, double new_value);
+
+  // A direct view of what place_delta tests (optional), for states whose place_delta is > 0
+  // exactly when a key is occupied (all_different: some variable present has that key).
+  // Placement tests millions of values; with the view IncrementalEvaluator reads one bit
+  // instead of making a virtual call, and the bits (one per key) stay in cache where counts
+  // would not. The retracted variable at `position` taking the integer value x would raise
+  // the violation exactly when bit k = x + shift(position) of `occupied` is set (bit k % 64
+  // of word k / 64); the shifts are 32-bit integers `stride` bytes apart from `shifts` on.
+  // The view stays valid, and follows every update, while the state lives. The default
+  // offers none.
+  struct OccupiedKeys {
+    const std::uint64_t* occupied = nullptr;  // nullptr: no view
+    const unsigned char* shifts = nullptr;
+    std::size_t stride = 0;
+    bool is_occupied(std::size_t position, double value) const {
+      std::int32_t shift;
+      std::memcpy(&shift, shifts + position * stride, sizeof shift);
+      const auto k = static_cast<std::uint64_t>(static_cast<std::int64_t>(value) + shift);
+      return (occupied[k / 64] >> (k % 64)) & 1;
+    }
+  };
+  virtual OccupiedKeys occupied_keys() const { return {}; }
 };
 
 class Constraint {
@@ -124,8 +150,7 @@ class Constraint {
   // satisfiable problem is still a true optimum. Default: violation_and_gradient (already
   // smooth, or nothing better known).
   virtual double smooth_violation_and_gradient(std::span<const double> values,
-                                               std::span<double> gradient,
-                                               double smoothing) const;
+                                               std::span<double> gradient, double smoothing) const;
 
   // Kind and scope as text, for reports: "not_equal(x0, x3)".
   std::string describe() const;

@@ -37,7 +37,10 @@ void IncrementalEvaluator::resynchronise() {
   for (ConstraintId id = 0; id < m; ++id) {
     const Constraint& c = problem_->constraint(id);
     IncrementalState* state = states_[id].get();
-    tracked_[id] = {state, &c, c.weight(), c.is_hard(), state && state->supports_partial()};
+    const bool partial = state && state->supports_partial();
+    tracked_[id] = {
+        state,       &c,      c.weight(),
+        c.is_hard(), partial, partial ? state->occupied_keys() : IncrementalState::OccupiedKeys{}};
   }
   if (!links_.empty()) return;  // the links depend on the problem only: built once
   const std::size_t n = problem_->num_variables();
@@ -170,16 +173,6 @@ Score IncrementalEvaluator::place_delta(VariableId var, double value) {
   return change;
 }
 
-bool IncrementalEvaluator::place_is_free(VariableId var, double value) {
-  for (const Incidence& link : links(var)) {
-    ++evaluations_;
-    if (tracked_[link.constraint].state->place_delta(values_, link.position, value) > 0) {
-      return false;
-    }
-  }
-  return true;
-}
-
 void IncrementalEvaluator::place(VariableId var, double value) {
   for (const Incidence& link : links(var)) {
     IncrementalState* state = tracked_[link.constraint].state;
@@ -187,6 +180,17 @@ void IncrementalEvaluator::place(VariableId var, double value) {
     state->place(values_, link.position, value);
     violations_[link.constraint] += dv;
     add(total_, link.constraint, dv);
+  }
+  values_[var] = value;
+}
+
+void IncrementalEvaluator::place_free(VariableId var, double value) {
+  for (const Incidence& link : links(var)) {
+    const double dv = tracked_[link.constraint].state->place_free(values_, link.position, value);
+    if (dv != 0) {
+      violations_[link.constraint] += dv;
+      add(total_, link.constraint, dv);
+    }
   }
   values_[var] = value;
 }

@@ -17,9 +17,13 @@ class Random {
   explicit Random(std::uint64_t seed) : engine_(seed) {}
 
   // Uniform in [0, n), n >= 1.
-  std::size_t index(std::size_t n) {
+  std::size_t index(std::size_t n) { return scale(bits(), n); }
+  // The same in two steps, for callers that draw ahead of use: 64 random bits now, and
+  // scale(bits, n), uniform in [0, n), when n is known.
+  std::uint64_t bits() { return engine_(); }
+  static std::size_t scale(std::uint64_t bits, std::size_t n) {
     __extension__ using Wide = unsigned __int128;
-    return static_cast<std::size_t>((static_cast<Wide>(engine_()) * n) >> 64);
+    return static_cast<std::size_t>((static_cast<Wide>(bits) * n) >> 64);
   }
   // Uniform in [0, 1).
   double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
