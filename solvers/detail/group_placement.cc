@@ -19,6 +19,7 @@ PlacementReport place_group(csp::IncrementalEvaluator& evaluator, const Permutat
                             std::vector<double>& pool) {
   PlacementReport report;
   const std::size_t k = group.free.size();
+  if (k == 0) return report;
   pool.resize(k);
   for (std::size_t i = 0; i < k; ++i) pool[i] = evaluator.values()[group.free[i]];
   evaluator.retract(group.free);
@@ -30,7 +31,8 @@ PlacementReport place_group(csp::IncrementalEvaluator& evaluator, const Permutat
   // Each draw reads the pool at a random place: on large groups a cache miss, which is most
   // of the cost. So the random bits are drawn kAhead draws before use, and the pool entry
   // they will pick is fetched then: it is placed' + scale(bits, k - placed') for the placed'
-  // of that time, at most kAhead entries before the estimate made with today's placed.
+  // of that time, which lies within kAhead entries after the estimate made with today's
+  // placed; both ends are fetched.
   constexpr std::size_t kAhead = 16;
   std::array<std::uint64_t, kAhead> ahead;
   const auto prefetch = [&](std::uint64_t bits) {
