@@ -71,7 +71,7 @@ class IncrementalState {
   // place() for a value the caller has found does not raise the violation (place_delta
   // <= 0); returns the change. The default is place_delta then place; kinds override it when
   // knowing this is cheaper (all_different: the key was free, so its count goes from 0 to 1,
-  // which can wait).
+  // which can wait until its next other call: meant for placing many variables in a row).
   virtual double place_free(std::span<const double> values, std::size_t position, double new_value);
 
   // A direct view of what place_delta tests (optional), for states whose place_delta is > 0
