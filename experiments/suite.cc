@@ -126,12 +126,20 @@ void require_unique(std::set<std::string>& seen, const std::string& label, const
 
 void read_controller(const Spec& spec, camera::ChaseCameraOptions& o) {
   spec.check_keys({"visibility_guard", "max_speed", "max_acceleration", "response_time",
-                   "target_smoothing", "min_shot_seconds", "stuck_seconds", "backing_speed"});
+                   "target_smoothing", "target_smoothing_stages", "min_shot_seconds",
+                   "stuck_seconds", "backing_speed"});
   o.visibility_guard = spec.bool_or("visibility_guard", o.visibility_guard);
   o.max_speed = spec.number_or("max_speed", o.max_speed);
   o.max_acceleration = spec.number_or("max_acceleration", o.max_acceleration);
   o.response_time = spec.number_or("response_time", o.response_time);
   o.target_smoothing = spec.number_or("target_smoothing", o.target_smoothing);
+  if (const Spec* stages = spec.find("target_smoothing_stages")) {
+    const long long k = stages->as_integer("a number of low-pass stages, 1 to 4");
+    if (k < 1 || k > 4) {
+      stages->fail("target_smoothing_stages must be 1 to 4, got " + std::to_string(k));
+    }
+    o.target_smoothing_stages = static_cast<int>(k);
+  }
   o.min_shot_seconds = spec.number_or("min_shot_seconds", o.min_shot_seconds);
   o.stuck_seconds = spec.number_or("stuck_seconds", o.stuck_seconds);
   o.backing_speed = spec.number_or("backing_speed", o.backing_speed);
@@ -145,6 +153,9 @@ std::string controller_text(const camera::ChaseCameraOptions& o) {
       << ",accel=" << o.max_acceleration << ",response=" << o.response_time
       << ",smoothing=" << o.target_smoothing << ",shot=" << o.min_shot_seconds
       << ",stuck=" << o.stuck_seconds << ",backing=" << o.backing_speed;
+  // Fields added later appear only when they differ from their default, so the run ids of
+  // existing suites (which hash this text) stay the same.
+  if (o.target_smoothing_stages != 1) out << ",stages=" << o.target_smoothing_stages;
   return out.str();
 }
 
@@ -195,7 +206,8 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
       suite.profiles.push_back(std::move(p));
     }
   }
-  if (suite.profiles.empty()) suite.profiles.push_back({"scene", std::nullopt, true, "scene,areas=1", {}});
+  if (suite.profiles.empty())
+    suite.profiles.push_back({"scene", std::nullopt, true, "scene,areas=1", {}});
 
   // Solvers: checked by building each on the first scene, as a run will.
   labels.clear();
@@ -223,8 +235,8 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
       entry.fail(std::string("camera solver '") + s.options.solver + "': " + e.what());
     }
     s.definition = "solver=" + s.options.solver + ",options{" +
-                   options_text(s.options.solver_options) + "}," +
-                   controller_text(s.options) + ",areas=" + std::to_string(s.area_adaptation);
+                   options_text(s.options.solver_options) + "}," + controller_text(s.options) +
+                   ",areas=" + std::to_string(s.area_adaptation);
     require_unique(labels, s.label, entry, "camera solver");
     suite.camera_solvers.push_back(std::move(s));
   }
@@ -238,7 +250,8 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
   const Spec& instances = spec.at("instances");
   for (const Spec& entry : instances.items("a list of instances")) {
     if (!entry.is_map()) {
-      entry.fail("expected an instance: {nqueens: N}, {problem: PATH} or {graph: PATH, colours: K}");
+      entry.fail(
+          "expected an instance: {nqueens: N}, {problem: PATH} or {graph: PATH, colours: K}");
     }
     entry.check_keys({"nqueens", "problem", "graph", "colours"});
     std::vector<SuiteProblem> made;
@@ -253,7 +266,8 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
         made.push_back(p);
       }
     } else if (const Spec* file = entry.find("problem")) {
-      for (const std::string& path : expand_glob(*file, base_dir, file->as_string("a path or glob"))) {
+      for (const std::string& path :
+           expand_glob(*file, base_dir, file->as_string("a path or glob"))) {
         SuiteProblem p;
         p.kind = SuiteProblem::Kind::kProblemFile;
         p.path = path;
@@ -261,7 +275,8 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
       }
     } else if (const Spec* graph = entry.find("graph")) {
       const Spec& colours = entry.at("colours");
-      for (const std::string& path : expand_glob(*graph, base_dir, graph->as_string("a path or glob"))) {
+      for (const std::string& path :
+           expand_glob(*graph, base_dir, graph->as_string("a path or glob"))) {
         for (const Spec& k : one_or_many(colours)) {
           const long long c = k.as_integer("a number of colours >= 1");
           if (c < 1) k.fail("expected a number of colours >= 1, got " + k.preview());
@@ -307,7 +322,8 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
       s.label = entry.string_or("label", s.name);
       made.push_back(std::move(s));
     } else {
-      const std::string& name = entry.as_string("a solver name, `all`, or {solver: ..., options: ...}");
+      const std::string& name =
+          entry.as_string("a solver name, `all`, or {solver: ..., options: ...}");
       made.push_back({name, name, {}, "", {}});
     }
     for (SuiteToySolver& s : made) {
@@ -387,10 +403,11 @@ std::vector<SuiteRun> expand_runs(const Suite& suite) {
           run.profile = pr;
           run.seed = seed;
           run.definition = "camera;scene=" + suite.scenes[sc].label + "#" + scene_hash + ";" +
-                           suite.camera_solvers[so].definition + ";profile=" +
-                           suite.profiles[pr].definition + ";seed=" + std::to_string(seed);
-          run.id = file_safe(suite.scenes[sc].label + "__" + suite.camera_solvers[so].label +
-                             "__" + suite.profiles[pr].label + "__s" + std::to_string(seed)) +
+                           suite.camera_solvers[so].definition +
+                           ";profile=" + suite.profiles[pr].definition +
+                           ";seed=" + std::to_string(seed);
+          run.id = file_safe(suite.scenes[sc].label + "__" + suite.camera_solvers[so].label + "__" +
+                             suite.profiles[pr].label + "__s" + std::to_string(seed)) +
                    "__" + hex8(fnv1a(run.definition));
           runs.push_back(std::move(run));
         }
@@ -415,9 +432,9 @@ std::vector<SuiteRun> expand_runs(const Suite& suite) {
         run.seed = seed;
         run.definition = "toy;" + problem_text + ";" + suite.toy_solvers[so].definition + ";" +
                          limits.str() + ";seed=" + std::to_string(seed);
-        run.id = file_safe(p.label + "__" + suite.toy_solvers[so].label + "__s" +
-                           std::to_string(seed)) +
-                 "__" + hex8(fnv1a(run.definition));
+        run.id =
+            file_safe(p.label + "__" + suite.toy_solvers[so].label + "__s" + std::to_string(seed)) +
+            "__" + hex8(fnv1a(run.definition));
         runs.push_back(std::move(run));
       }
     }

@@ -146,6 +146,30 @@ camera:
   EXPECT_NE(message.find("no_such_option"), std::string::npos) << message;
 }
 
+TEST(SuiteFile, SmoothingStagesAreReadAndABadCountIsAnErrorAtItsLine) {
+  ScratchDir dir("suite-stages");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: x
+camera:
+  scenes: [scenes/wall.yaml]
+  solvers:
+    - occlusion-octree
+    - {label: smooth, solver: occlusion-octree, controller: {target_smoothing_stages: 2}}
+)"));
+  ASSERT_EQ(suite.camera_solvers.size(), 2u);
+  EXPECT_EQ(suite.camera_solvers[0].options.target_smoothing_stages, 1);
+  EXPECT_EQ(suite.camera_solvers[1].options.target_smoothing_stages, 2);
+  for (const char* bad : {"0", "5", "1.5", "two"}) {
+    const std::string path = dir.write("bad.yaml", std::string(R"(name: x
+camera:
+  scenes: [scenes/wall.yaml]
+  solvers:
+    - {solver: occlusion-octree, controller: {target_smoothing_stages: )") + bad + "}}\n");
+    const std::string message = error_of([&] { read_suite_file(path); });
+    EXPECT_NE(message.find("bad.yaml:5"), std::string::npos) << bad << ": " << message;
+    EXPECT_NE(message.find("stages"), std::string::npos) << bad << ": " << message;
+  }
+}
+
 TEST(SuiteFile, AGlobMatchingNothingIsAnError) {
   ScratchDir dir("suite-glob");
   const std::string path = dir.write("suite.yaml", R"(name: x

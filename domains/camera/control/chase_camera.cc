@@ -17,6 +17,9 @@ std::string ChaseCameraOptions::validate() const {
   if (!(target_smoothing >= 0) || !std::isfinite(target_smoothing)) {
     return "target_smoothing must be >= 0 (s)";
   }
+  if (target_smoothing_stages < 1 || target_smoothing_stages > 4) {
+    return "target_smoothing_stages must be 1 to 4, got " + std::to_string(target_smoothing_stages);
+  }
   if (!(min_shot_seconds >= 0) || !std::isfinite(min_shot_seconds)) {
     return "min_shot_seconds must be >= 0 (s)";
   }
@@ -44,7 +47,7 @@ ChaseCamera::~ChaseCamera() = default;
 void ChaseCamera::reset(const Eigen::Vector3d& position) {
   position_ = position;
   velocity_.setZero();
-  filtered_target_ = position;
+  set_filtered_target(position);
   since_cut_ = 1e9;
   stuck_for_ = 0;
   frame_.position = position;
@@ -105,7 +108,7 @@ Eigen::Vector3d ChaseCamera::smooth_step(const Eigen::Vector3d& target, double d
 void ChaseCamera::cut_to(const Eigen::Vector3d& p, CutReason reason) {
   position_ = p;
   velocity_.setZero();
-  filtered_target_ = p;
+  set_filtered_target(p);
   since_cut_ = 0;
   stuck_for_ = 0;
   frame_.cut = true;
@@ -156,14 +159,19 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       if (usable(other, look)) target = other;
     }
     // The solver's target moves a little every frame; the spring follows a low-passed copy.
-    const double keep = options_.target_smoothing > 0
-                            ? std::exp(-dt / options_.target_smoothing) : 0.0;
-    filtered_target_ = keep * filtered_target_ + (1 - keep) * target;
+    const double keep =
+        options_.target_smoothing > 0 ? std::exp(-dt / options_.target_smoothing) : 0.0;
+    const auto stages = static_cast<std::size_t>(options_.target_smoothing_stages);
+    for (std::size_t i = 0; i < stages; ++i) {
+      const Eigen::Vector3d& input = i == 0 ? target : filtered_target_[i - 1];
+      filtered_target_[i] = keep * filtered_target_[i] + (1 - keep) * input;
+    }
+    const Eigen::Vector3d& followed = filtered_target_[stages - 1];
     // Smooth motion if the step keeps the character visible and crosses no geometry; a
     // shorter step if only that does; otherwise stay, or cut if staying loses sight too.
     bool moved = false;
     Eigen::Vector3d velocity;
-    const Eigen::Vector3d step = smooth_step(filtered_target_, dt, &velocity);
+    const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
     for (double fraction : {1.0, 0.5, 0.25}) {
       const Eigen::Vector3d next = position_ + fraction * (step - position_);
       if (!guard || (usable(next, look) && sees(position_, next))) {
@@ -177,7 +185,7 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       stuck_for_ = 0;
     } else if (usable(position_, look)) {
       velocity_.setZero();
-      filtered_target_ = position_;
+      set_filtered_target(position_);
       stuck_for_ += dt;
       if (stuck_for_ >= options_.stuck_seconds && may_cut && usable(target, look) &&
           (target - position_).norm() > max_step(dt)) {
