@@ -7,21 +7,21 @@
 // with grid.points = 64, i.e. 262,144 candidates). Every solver then solves the same frame
 // from the last camera position. Printed as a Markdown table: mean cost relative to the
 // reference (1.00 = as good; as a ratio of mean costs, and as the mean of per-frame
-// ratios, which near-zero optima make harsh), frames within 1% of it, frames feasible (look-at visible,
-// clear of geometry), and the mean and p99 time per frame.
+// ratios, which near-zero optima make harsh), frames within 1% of it, frames feasible (look-at
+// visible, clear of geometry), and the mean and p99 time per frame.
 //
 //   build/bench/solver_quality [--frames-per-scene N] [--grid-points K] [--misses]
 //                              [--pipeline-option key=value]...
 // --misses lists the frames where the pipeline is not within 1% of the reference and why
 // (see print_miss); --pipeline-option passes an option to the pipeline ("ceres-refine.
 // alternatives=0" measures it without the octree's alternatives).
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
-#include <span>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -64,13 +64,13 @@ void print_miss(const csp::Problem& problem, const SampledFrame& frame, const do
                 const csp::Assignment& octree_point, const solvers::SolverResult& refined,
                 const solvers::SolverResult& reference) {
   const csp::Score octree_score = problem.score(octree_point);
-  std::printf("miss %s frame %zu: octree %s %.4f%s | refined %s %.4f%s | reference %s %.4f | "
-              "start %s\n",
-              frame.scene->name().c_str(), frame.index, point_text(octree_point).c_str(),
-              octree_score.soft, octree_score.feasible() ? "" : " INFEASIBLE",
-              point_text(refined.best).c_str(), refined.cost(),
-              refined.feasible() ? "" : " INFEASIBLE", point_text(reference.best).c_str(),
-              reference.cost(), point_text(std::span<const double>(start, 3)).c_str());
+  std::printf(
+      "miss %s frame %zu: octree %s %.4f%s | refined %s %.4f%s | reference %s %.4f | "
+      "start %s\n",
+      frame.scene->name().c_str(), frame.index, point_text(octree_point).c_str(), octree_score.soft,
+      octree_score.feasible() ? "" : " INFEASIBLE", point_text(refined.best).c_str(),
+      refined.cost(), refined.feasible() ? "" : " INFEASIBLE", point_text(reference.best).c_str(),
+      reference.cost(), point_text(std::span<const double>(start, 3)).c_str());
   std::printf("    message: %s\n    segment refined->reference:", refined.message.c_str());
   csp::Assignment x(3);
   for (int k = 0; k <= 20; ++k) {
@@ -92,33 +92,32 @@ void print_miss(const csp::Problem& problem, const SampledFrame& frame, const do
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"camera solvers' cost against a fine grid optimum on sampled frames"};
   int per_scene = 30;
   int grid_points = 64;
   bool list_misses = false;
+  std::vector<std::string> pipeline_option_texts;
+  app.add_option("--frames-per-scene", per_scene, "frames sampled along each scene's run")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--grid-points", grid_points, "reference lattice points per axis")
+      ->check(CLI::Range(2, 256));
+  app.add_flag("--misses", list_misses, "list the frames the pipeline misses by over 1%");
+  app.add_option("--pipeline-option", pipeline_option_texts,
+                 "key=value for the pipeline (stage-prefixed, e.g. ceres-refine.alternatives=0)");
+  CLI11_PARSE(app, argc, argv);
   solvers::OptionValues pipeline_options;  // for the last solver, the pipeline
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--misses") {
-      list_misses = true;
-    } else if (flag == "--pipeline-option" && i + 1 < argc) {
-      try {
-        pipeline_options.insert(solvers::split_option(argv[++i]));
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "--pipeline-option: %s\n", e.what());
-        return 2;
-      }
-    } else if (flag == "--frames-per-scene" && i + 1 < argc) {
-      per_scene = std::atoi(argv[++i]);
-    } else if (flag == "--grid-points" && i + 1 < argc) {
-      grid_points = std::atoi(argv[++i]);
-    } else {
-      std::fprintf(stderr, "unknown or incomplete option '%s'\n", flag.c_str());
+  for (const std::string& text : pipeline_option_texts) {
+    try {
+      pipeline_options.insert(solvers::split_option(text));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "--pipeline-option: %s\n", e.what());
       return 2;
     }
   }
   camera::solver_registry();
   std::vector<std::string> paths;
-  for (const auto& e : std::filesystem::directory_iterator(SIGHTLINE_SOURCE_DIR "/experiments/scenes")) {
+  for (const auto& e :
+       std::filesystem::directory_iterator(SIGHTLINE_SOURCE_DIR "/experiments/scenes")) {
     if (e.path().extension() == ".yaml") paths.push_back(e.path().string());
   }
   std::sort(paths.begin(), paths.end());
@@ -148,13 +147,13 @@ int main(int argc, char** argv) {
   std::vector<SolverStats> stats;
   for (const auto& n : names) stats.push_back({n, {}, {}, 0, 0, 0});
   auto& registry = solvers::SolverRegistry::global();
-  auto reference = registry.create("grid>ceres-refine",
-                                   {{"grid.points", std::to_string(grid_points)}});
+  auto reference =
+      registry.create("grid>ceres-refine", {{"grid.points", std::to_string(grid_points)}});
   std::vector<std::unique_ptr<solvers::Solver>> solvers;
   try {
     for (const auto& n : names) {
-      solvers.push_back(registry.create(n, n == names.back() ? pipeline_options
-                                                             : solvers::OptionValues{}));
+      solvers.push_back(
+          registry.create(n, n == names.back() ? pipeline_options : solvers::OptionValues{}));
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
@@ -171,12 +170,14 @@ int main(int argc, char** argv) {
     context.seed = seed++;
     const auto t0 = std::chrono::steady_clock::now();
     const solvers::SolverResult best = reference->solve(problem.problem(), start, context);
-    reference_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    reference_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     csp::Assignment octree_point;
     for (std::size_t s = 0; s < solvers.size(); ++s) {
       const auto t1 = std::chrono::steady_clock::now();
       const solvers::SolverResult r = solvers[s]->solve(problem.problem(), start, context);
-      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      const double secs =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
       SolverStats& st = stats[s];
       ++st.frames;
       st.seconds.push_back(secs);
@@ -196,12 +197,14 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("%zu frames from %zu thesis scenes; reference: grid %d^3 > ceres-refine, %.1f ms "
-              "per frame\n\n",
-              frames.size(), scenes.size(), grid_points, 1e3 * reference_seconds / frames.size());
-  std::printf("| solver | mean cost / mean reference cost | mean per-frame ratio | frames within "
-              "1%% | feasible | mean time (us) | p99 time (us) | time / reference time |\n"
-              "|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "%zu frames from %zu thesis scenes; reference: grid %d^3 > ceres-refine, %.1f ms "
+      "per frame\n\n",
+      frames.size(), scenes.size(), grid_points, 1e3 * reference_seconds / frames.size());
+  std::printf(
+      "| solver | mean cost / mean reference cost | mean per-frame ratio | frames within "
+      "1%% | feasible | mean time (us) | p99 time (us) | time / reference time |\n"
+      "|---|---|---|---|---|---|---|---|\n");
   for (SolverStats& st : stats) {
     double mean_ratio = 0;
     for (double r : st.ratio) mean_ratio += r;
@@ -210,8 +213,9 @@ int main(int argc, char** argv) {
     for (double s : st.seconds) mean_time += s;
     mean_time /= std::max<std::size_t>(1, st.seconds.size());
     std::printf("| %s | %.4f | %.4f | %d / %d | %d / %d | %.0f | %.0f | 1/%.0f |\n",
-                st.name.c_str(), st.cost_sum / std::max(st.reference_sum, 1e-12), mean_ratio, st.within_1pct, static_cast<int>(st.ratio.size()), st.feasible,
-                st.frames, mean_time * 1e6, experiments::percentile(st.seconds, 99) * 1e6,
+                st.name.c_str(), st.cost_sum / std::max(st.reference_sum, 1e-12), mean_ratio,
+                st.within_1pct, static_cast<int>(st.ratio.size()), st.feasible, st.frames,
+                mean_time * 1e6, experiments::percentile(st.seconds, 99) * 1e6,
                 (reference_seconds / frames.size()) / mean_time);
   }
   return 0;
