@@ -27,7 +27,7 @@ namespace sightline::solvers::detail {
 bool can_place_group(const csp::IncrementalEvaluator& evaluator, const PermutationGroup& group);
 
 struct PlacementReport {
-  std::uint64_t draws = 0;    // values tried (each one place_delta)
+  std::uint64_t draws = 0;    // values tried (each one place_is_free)
   std::size_t placed = 0;     // variables that found a value making nothing worse
   std::size_t left_over = 0;  // variables that took what was left
 };
