@@ -1,4 +1,5 @@
-// `sightline follow SCENE.yaml --solver NAME [--profile NAME|FILE] [--seed S] [--trace OUT.csv]`
+// `sightline follow SCENE.yaml --solver NAME [--profile NAME|FILE] [--seed S] [--trace OUT.csv]
+//  [--smoothing-stages K]`
 // (FORMATS.md): runs one scene with one solver through the chase camera, prints a
 // one-paragraph summary and writes the trace.
 #include <iostream>
@@ -24,6 +25,7 @@ struct FollowOptions {
   std::uint64_t seed = 1;
   std::string trace;
   bool no_guard = false;
+  int smoothing_stages = 1;
 };
 
 void run_follow(const FollowOptions& o) {
@@ -37,6 +39,7 @@ void run_follow(const FollowOptions& o) {
   options.solver = o.solver;
   options.seed = o.seed;
   options.visibility_guard = !o.no_guard;
+  options.target_smoothing_stages = o.smoothing_stages;
   for (const std::string& s : o.settings) options.solver_options.insert(solvers::split_option(s));
   const experiments::CameraRun run = experiments::run_camera(scene, profile, options);
   if (!o.trace.empty()) experiments::write_trace_csv(o.trace, run.trace);
@@ -50,8 +53,7 @@ void add_follow_command(CLI::App& app) {
   auto options = std::make_shared<FollowOptions>();
   CLI::App* cmd = app.add_subcommand(
       "follow", "Run one scene with one solver through the chase camera and write its trace");
-  cmd->add_option("scene", options->scene, "scene file (YAML, see docs/CAMERA.md)")
-      ->required();
+  cmd->add_option("scene", options->scene, "scene file (YAML, see docs/CAMERA.md)")->required();
   cmd->add_option("--solver", options->solver,
                   "registered solver or pipeline, e.g. occlusion-octree, bourne-octree, sls, "
                   "occlusion-octree>ceres-refine")
@@ -64,6 +66,9 @@ void add_follow_command(CLI::App& app) {
   cmd->add_option("--trace", options->trace, "write the per-frame trace (CSV) here");
   cmd->add_flag("--no-visibility-guard", options->no_guard,
                 "move wherever the solver says, as Bourne & Sattar's controller did");
+  cmd->add_option("--smoothing-stages", options->smoothing_stages,
+                  "low-pass stages on the solver's target, 1-4 (2: a third of the jerk, more lag)")
+      ->check(CLI::Range(1, 4));
   cmd->callback([options] { run_follow(*options); });
 }
 

@@ -264,4 +264,77 @@ TEST(SightlineCli, CompareRunsTheChosenSolversOnEveryProblem) {
   EXPECT_TRUE(contains(bad.output, "unknown solver 'tabu'")) << bad.output;
 }
 
+// `follow` (a contract in /work/shared/FORMATS.md): the trace starts with the shared columns,
+// in order, and has one row per frame with a number in every field; the summary names the
+// frames and the visibility.
+std::string scene(const std::string& name) {
+  return std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/" + name + ".yaml";
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+TEST(SightlineCli, FollowWritesTheSharedTraceFormatOneRowPerFrame) {
+  const TempFile trace("follow.csv", "");
+  const Outcome r = run("follow '" + scene("crammed-doorway") +
+                        "' --solver occlusion-octree --trace '" + trace.path() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "765 frames")) << r.output;
+  EXPECT_TRUE(contains(r.output, "visible")) << r.output;
+  const auto rows = read_csv(trace.path());
+  ASSERT_EQ(rows.size(), 766u);  // header + 765 frames
+  const std::vector<std::string> shared = {"frame",    "t",        "char_x", "char_y", "char_z",
+                                           "char_yaw", "cam_x",    "cam_y",  "cam_z",  "target_x",
+                                           "target_y", "target_z", "cut",    "cost",   "solve_us"};
+  ASSERT_GE(rows[0].size(), shared.size());
+  for (std::size_t i = 0; i < shared.size(); ++i) EXPECT_EQ(rows[0][i], shared[i]) << i;
+  for (std::size_t f = 1; f < rows.size(); ++f) {
+    ASSERT_EQ(rows[f].size(), rows[0].size()) << "row " << f;
+    EXPECT_EQ(rows[f][0], std::to_string(f - 1));
+    EXPECT_TRUE(rows[f][12] == "0" || rows[f][12] == "1") << rows[f][12];
+    for (const std::string& cell : rows[f]) {
+      std::size_t used = 0;
+      EXPECT_NO_THROW((void)std::stod(cell, &used)) << "row " << f << ": " << cell;
+      EXPECT_EQ(used, cell.size()) << "row " << f << ": " << cell;
+    }
+  }
+}
+
+TEST(SightlineCli, FollowSmoothingStagesChangeThePathAndBadCountsAreRefused) {
+  const TempFile one("one.csv", ""), two("two.csv", "");
+  const std::string base = "follow '" + scene("into-corner") + "' --solver occlusion-octree";
+  ASSERT_EQ(run(base + " --trace '" + one.path() + "'").status, 0);
+  ASSERT_EQ(run(base + " --smoothing-stages 2 --trace '" + two.path() + "'").status, 0);
+  const auto a = read_csv(one.path()), b = read_csv(two.path());
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t differing = 0;
+  for (std::size_t f = 1; f < a.size(); ++f) differing += a[f][6] != b[f][6];  // cam_x
+  EXPECT_GT(differing, a.size() / 2);
+  for (const char* bad : {"0", "5", "x"}) {
+    const Outcome r = run(base + " --smoothing-stages " + bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.output;
+    EXPECT_TRUE(contains(r.output, "smoothing-stages")) << r.output;
+  }
+}
+
+TEST(SightlineCli, FollowNamesAMissingSceneAndListsTheSolversForAnUnknownOne) {
+  const Outcome missing = run("follow /no/such/scene.yaml --solver occlusion-octree");
+  EXPECT_EQ(missing.status, 2) << missing.output;
+  EXPECT_TRUE(contains(missing.output, "/no/such/scene.yaml")) << missing.output;
+  const Outcome unknown = run("follow '" + scene("crammed-doorway") + "' --solver nope");
+  EXPECT_EQ(unknown.status, 2) << unknown.output;
+  for (const char* name : {"nope", "occlusion-octree", "bourne-octree"}) {
+    EXPECT_TRUE(contains(unknown.output, name)) << unknown.output;
+  }
+}
+
 }  // namespace
