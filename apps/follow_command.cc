@@ -9,6 +9,7 @@
 
 #include "apps/commands.h"
 #include "csp/input_error.h"
+#include "domains/camera/control/chase_camera.h"
 #include "domains/camera/profile_file.h"
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
@@ -68,7 +69,7 @@ void add_follow_command(CLI::App& app) {
                 "move wherever the solver says, as Bourne & Sattar's controller did");
   cmd->add_option("--smoothing-stages", options->smoothing_stages,
                   "low-pass stages on the solver's target, 1-4 (2: a third of the jerk, more lag)")
-      ->check(CLI::Range(1, 4));
+      ->check(CLI::Range(1, camera::ChaseCameraOptions::kMaxSmoothingStages));
   cmd->callback([options] { run_follow(*options); });
 }
 

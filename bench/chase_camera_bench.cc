@@ -12,7 +12,6 @@
 // while the thread is descheduled): cpu_p50_us, cpu_p99_us, cpu_max_us. On an idle core the
 // two agree. Results and the command line: docs/BENCHMARKS.md.
 #include <benchmark/benchmark.h>
-
 #include <time.h>
 
 #include <algorithm>
@@ -24,6 +23,7 @@
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
 #include "experiments/metrics.h"
+#include "experiments/scene_files.h"
 #include "experiments/scene_generator.h"
 
 namespace {
@@ -86,9 +86,17 @@ void BM_ChaseCameraFrame(benchmark::State& state, World world) {
 }
 
 BENCHMARK_CAPTURE(BM_ChaseCameraFrame, pillar_forest, World::kPillarForest)
-    ->Arg(10)->Arg(1000)->Arg(10000)->Iterations(3)->Unit(benchmark::kMillisecond);
+    ->Arg(10)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ChaseCameraFrame, city, World::kCity)
-    ->Arg(10)->Arg(1000)->Arg(10000)->Iterations(3)->Unit(benchmark::kMillisecond);
+    ->Arg(10)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 
 // The thesis scenes, through experiments::run_camera (what `sightline follow` runs): its
 // metrics' solve-time percentiles, one run per iteration.
@@ -111,13 +119,8 @@ void BM_ThesisScene(benchmark::State& state, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> scenes;
-  for (const auto& entry : std::filesystem::directory_iterator(
+  for (const std::string& path : sightline::experiments::scene_files(
            std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes")) {
-    if (entry.path().extension() == ".yaml") scenes.push_back(entry.path().string());
-  }
-  std::sort(scenes.begin(), scenes.end());
-  for (const std::string& path : scenes) {
     benchmark::RegisterBenchmark(
         ("BM_ThesisScene/" + std::filesystem::path(path).stem().string()).c_str(),
         [path](benchmark::State& state) { BM_ThesisScene(state, path); })

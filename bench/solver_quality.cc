@@ -30,6 +30,7 @@
 #include "domains/camera/control/chase_camera.h"
 #include "domains/camera/scene_file.h"
 #include "experiments/metrics.h"
+#include "experiments/scene_files.h"
 
 namespace {
 
@@ -115,12 +116,8 @@ int main(int argc, char** argv) {
     }
   }
   camera::solver_registry();
-  std::vector<std::string> paths;
-  for (const auto& e :
-       std::filesystem::directory_iterator(SIGHTLINE_SOURCE_DIR "/experiments/scenes")) {
-    if (e.path().extension() == ".yaml") paths.push_back(e.path().string());
-  }
-  std::sort(paths.begin(), paths.end());
+  const std::vector<std::string> paths =
+      experiments::scene_files(SIGHTLINE_SOURCE_DIR "/experiments/scenes");
   std::vector<camera::Scene> scenes;
   scenes.reserve(paths.size());
   for (const auto& p : paths) scenes.push_back(camera::read_scene_file(p));

@@ -34,13 +34,13 @@ void IncrementalEvaluator::resynchronise() {
   }
   evaluations_ += m;
   tracked_.resize(m);
+  occupied_keys_.assign(m, {});
   for (ConstraintId id = 0; id < m; ++id) {
     const Constraint& c = problem_->constraint(id);
     IncrementalState* state = states_[id].get();
     const bool partial = state && state->supports_partial();
-    tracked_[id] = {
-        state,       &c,      c.weight(),
-        c.is_hard(), partial, partial ? state->occupied_keys() : IncrementalState::OccupiedKeys{}};
+    tracked_[id] = {state, &c, c.weight(), c.is_hard(), partial};
+    if (partial) occupied_keys_[id] = state->occupied_keys();
   }
   if (!links_.empty()) return;  // the links depend on the problem only: built once
   const std::size_t n = problem_->num_variables();

@@ -68,10 +68,10 @@ class IncrementalEvaluator {
   bool place_is_free(VariableId var, double value) {
     for (const Incidence& link : links(var)) {
       ++evaluations_;
-      const Tracked& t = tracked_[link.constraint];
-      if (t.keys.occupied) {
-        if (t.keys.is_occupied(link.position, value)) return false;
-      } else if (t.state->place_delta(values_, link.position, value) > 0) {
+      const IncrementalState::OccupiedKeys& keys = occupied_keys_[link.constraint];
+      if (keys.occupied) {
+        if (keys.is_occupied(link.position, value)) return false;
+      } else if (tracked_[link.constraint].state->place_delta(values_, link.position, value) > 0) {
         return false;
       }
     }
@@ -91,8 +91,7 @@ class IncrementalEvaluator {
     const Constraint* constraint;
     double weight;
     bool hard;
-    bool partial;                         // the state supports partial assignments
-    IncrementalState::OccupiedKeys keys;  // when partial and the state offers them
+    bool partial;  // the state supports partial assignments
   };
   // Throws std::logic_error unless can_retract(var).
   void require_retractable(VariableId var) const;
@@ -110,6 +109,9 @@ class IncrementalEvaluator {
   std::vector<double> violations_;
   std::vector<char> constant_;    // per constraint
   std::vector<Tracked> tracked_;  // per constraint
+  // Per constraint, the occupied-key view of a partial state that offers one (only
+  // place_is_free reads it: kept out of Tracked, which every delta reads).
+  std::vector<IncrementalState::OccupiedKeys> occupied_keys_;
   // The incidences of the non-constant constraints, variable by variable: 8 bytes each and
   // contiguous (variable v's are [first_link_[v], first_link_[v + 1])).
   std::vector<std::uint32_t> first_link_;

@@ -134,9 +134,12 @@ void read_controller(const Spec& spec, camera::ChaseCameraOptions& o) {
   o.response_time = spec.number_or("response_time", o.response_time);
   o.target_smoothing = spec.number_or("target_smoothing", o.target_smoothing);
   if (const Spec* stages = spec.find("target_smoothing_stages")) {
-    const long long k = stages->as_integer("a number of low-pass stages, 1 to 4");
-    if (k < 1 || k > 4) {
-      stages->fail("target_smoothing_stages must be 1 to 4, got " + std::to_string(k));
+    constexpr int kMax = camera::ChaseCameraOptions::kMaxSmoothingStages;
+    const long long k =
+        stages->as_integer("a number of low-pass stages, 1 to " + std::to_string(kMax));
+    if (k < 1 || k > kMax) {
+      stages->fail("target_smoothing_stages must be 1 to " + std::to_string(kMax) + ", got " +
+                   std::to_string(k));
     }
     o.target_smoothing_stages = static_cast<int>(k);
   }

@@ -17,8 +17,9 @@ std::string ChaseCameraOptions::validate() const {
   if (!(target_smoothing >= 0) || !std::isfinite(target_smoothing)) {
     return "target_smoothing must be >= 0 (s)";
   }
-  if (target_smoothing_stages < 1 || target_smoothing_stages > 4) {
-    return "target_smoothing_stages must be 1 to 4, got " + std::to_string(target_smoothing_stages);
+  if (target_smoothing_stages < 1 || target_smoothing_stages > kMaxSmoothingStages) {
+    return "target_smoothing_stages must be 1 to " + std::to_string(kMaxSmoothingStages) +
+           ", got " + std::to_string(target_smoothing_stages);
   }
   if (!(min_shot_seconds >= 0) || !std::isfinite(min_shot_seconds)) {
     return "min_shot_seconds must be >= 0 (s)";

@@ -39,9 +39,10 @@ struct ChaseCameraOptions {
   double max_acceleration = 15.0;  // m/s^2
   double response_time = 0.3;      // s: the spring toward the target settles in ~2x this
   double target_smoothing = 0.15;  // s: time constant of the low-pass on the solver's target
-  // First-order low-pass stages in cascade, each of time constant target_smoothing (1-4).
-  // 2 cuts the camera's jerk to about a third on the thesis scenes, at the cost of more lag
-  // behind the solver's target (docs/CAMERA.md).
+  // First-order low-pass stages in cascade, each of time constant target_smoothing (1 to
+  // kMaxSmoothingStages). 2 cuts the camera's jerk to about a third on the thesis scenes, at
+  // the cost of more lag behind the solver's target (docs/EXPERIMENTS.md).
+  static constexpr int kMaxSmoothingStages = 4;
   int target_smoothing_stages = 1;
   double min_shot_seconds = 1.0;  // s: no discretionary cut sooner after a cut
   double stuck_seconds = 0.5;     // s: blocked from its target this long -> cut
@@ -98,8 +99,7 @@ class ChaseCamera : public CameraController {
   Eigen::Vector3d position_;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   // The low-pass stages' outputs; the last one in use is what the spring follows.
-  static constexpr int kMaxSmoothingStages = 4;
-  std::array<Eigen::Vector3d, kMaxSmoothingStages> filtered_target_{};
+  std::array<Eigen::Vector3d, ChaseCameraOptions::kMaxSmoothingStages> filtered_target_{};
   void set_filtered_target(const Eigen::Vector3d& p) { filtered_target_.fill(p); }
   double since_cut_ = 1e9;  // seconds since the last cut
   double stuck_for_ = 0;    // seconds the smooth move has been blocked

@@ -17,6 +17,7 @@
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
 #include "experiments/independent_check.h"
+#include "experiments/scene_files.h"
 
 namespace sightline {
 namespace {
@@ -270,22 +271,21 @@ TEST(PullForward, EasesInWithOccludedDampingAndOutWithReturnDamping) {
 
 std::vector<std::string> thesis_scenes() {
   std::vector<std::string> out;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(SIGHTLINE_SOURCE_DIR) +
-                                                               "/experiments/scenes")) {
-    if (entry.path().extension() == ".yaml") out.push_back(entry.path().stem().string());
+  for (const std::string& path :
+       experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes")) {
+    out.push_back(std::filesystem::path(path).stem().string());
   }
-  std::sort(out.begin(), out.end());
   return out;
 }
 
 camera::Scene thesis_scene(const std::string& name) {
-  return camera::read_scene_file(std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/" +
-                                 name + ".yaml");
+  return camera::read_scene_file(std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/" + name +
+                                 ".yaml");
 }
 
 TEST(Baselines, RunOnEveryThesisSceneAndFlagEveryJump) {
-  std::printf("\n%-18s %-13s %8s %6s %6s %9s %9s\n", "scene", "camera", "visible%", "cuts",
-              "jumps", "clear-vio", "cost-mean");
+  std::printf("\n%-18s %-13s %8s %6s %6s %9s %9s\n", "scene", "camera", "visible%", "cuts", "jumps",
+              "clear-vio", "cost-mean");
   for (const std::string& name : thesis_scenes()) {
     const camera::Scene scene = thesis_scene(name);
     for (const char* baseline : {"spring-arm", "pull-forward"}) {
@@ -311,7 +311,8 @@ TEST(SpringArm, NeverEndsInsideGeometryOnTheThesisScenes) {
     camera::SpringArm arm(scene, scene.profile());
     const double r = arm.options().probe_radius;
     for (std::size_t i = 0; i < scene.frame_count(); ++i) {
-      const camera::CameraFrame& f = arm.update(scene.character_at(scene.frame_time(i)), 1.0 / scene.frame_rate());
+      const camera::CameraFrame& f =
+          arm.update(scene.character_at(scene.frame_time(i)), 1.0 / scene.frame_rate());
       if (experiments::distance_to_geometry(brute, arm.pivot()) < r) {
         EXPECT_EQ(f.position, arm.pivot());
         continue;
@@ -331,7 +332,8 @@ TEST(PullForward, SeesTheCharacterWhenSettledOnAClearSightLineOnTheThesisScenes)
     const auto brute = brute_boxes(scene);
     camera::PullForward cam(scene, scene.profile());
     for (std::size_t i = 0; i < scene.frame_count(); ++i) {
-      const camera::CameraFrame& f = cam.update(scene.character_at(scene.frame_time(i)), 1.0 / scene.frame_rate());
+      const camera::CameraFrame& f =
+          cam.update(scene.character_at(scene.frame_time(i)), 1.0 / scene.frame_rate());
       if ((f.position - cam.corrected()).norm() > 1e-9) continue;
       const Vector3d dir = (cam.preferred() - f.target).normalized();
       const Vector3d near_end = f.target + cam.options().minimum_distance_from_target * dir;

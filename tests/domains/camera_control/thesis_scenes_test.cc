@@ -14,17 +14,17 @@
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
 #include "experiments/independent_check.h"
+#include "experiments/scene_files.h"
 
 namespace sightline {
 namespace {
 
 std::vector<std::string> thesis_scenes() {
   std::vector<std::string> out;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(SIGHTLINE_SOURCE_DIR) +
-                                                               "/experiments/scenes")) {
-    if (entry.path().extension() == ".yaml") out.push_back(entry.path().stem().string());
+  for (const std::string& path :
+       experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes")) {
+    out.push_back(std::filesystem::path(path).stem().string());
   }
-  std::sort(out.begin(), out.end());
   return out;
 }
 
