@@ -46,20 +46,6 @@ Domain Domain::real_interval(double lo, double hi) {
   return d;
 }
 
-std::size_t Domain::size() const {
-  switch (kind_) {
-    case DomainKind::kIntegerRange: return static_cast<std::size_t>(hi_ - lo_) + 1;
-    case DomainKind::kValueSet: return values_.size();
-    case DomainKind::kRealInterval: return 0;
-  }
-  return 0;
-}
-
-double Domain::value_at(std::size_t index) const {
-  if (kind_ == DomainKind::kValueSet) return values_[index];
-  return lo_ + static_cast<double>(index);
-}
-
 std::optional<std::size_t> Domain::index_of(double value) const {
   switch (kind_) {
     case DomainKind::kIntegerRange:

@@ -28,10 +28,20 @@ class Domain {
   bool is_discrete() const { return kind_ != DomainKind::kRealInterval; }
   bool is_continuous() const { return kind_ == DomainKind::kRealInterval; }
 
-  // Number of values of a discrete domain (0 for a continuous one).
-  std::size_t size() const;
+  // Number of values of a discrete domain (0 for a continuous one). Inline, as value_at:
+  // local search calls both in its inner loops.
+  std::size_t size() const {
+    switch (kind_) {
+      case DomainKind::kIntegerRange: return static_cast<std::size_t>(hi_ - lo_) + 1;
+      case DomainKind::kValueSet: return values_.size();
+      case DomainKind::kRealInterval: return 0;
+    }
+    return 0;
+  }
   // The index-th value of a discrete domain (index < size()).
-  double value_at(std::size_t index) const;
+  double value_at(std::size_t index) const {
+    return kind_ == DomainKind::kValueSet ? values_[index] : lo_ + static_cast<double>(index);
+  }
   // The index of a value in a discrete domain, if it belongs to it.
   std::optional<std::size_t> index_of(double value) const;
 

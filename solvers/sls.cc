@@ -77,13 +77,14 @@ void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
                            const SolveContext& context, SolverResult& result) {
   Budget budget(context.limits, 256);
   result.solutions_at_best = 0;
+  std::optional<csp::Score> scored;
   if (problem.all_discrete()) {
-    detail::run_discrete_sls(problem, start, options_, context.seed, budget, result);
+    scored = detail::run_discrete_sls(problem, start, options_, context.seed, budget, result);
   } else {
     detail::run_continuous_sls(problem, start, options_, context.seed, budget, result, current_,
                                candidate_);
   }
-  finish_result(problem, context, budget, result);
+  finish_result(problem, context, budget, result, scored);
 }
 
 }  // namespace sightline::solvers

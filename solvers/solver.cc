@@ -61,8 +61,8 @@ double Budget::elapsed_seconds() const {
 }
 
 void finish_result(const csp::Problem& problem, const SolveContext& context,
-                   const Budget& budget, SolverResult& result) {
-  result.score = problem.score(result.best);
+                   const Budget& budget, SolverResult& result, std::optional<csp::Score> scored) {
+  result.score = scored ? *scored : problem.score(result.best);
   if (context.want_breakdown) {
     result.breakdown = problem.breakdown(result.best);
   } else {

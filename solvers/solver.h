@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -110,8 +111,12 @@ class Budget {
   StopReason reason_ = StopReason::kCompleted;
 };
 
-// Shared ending: stores score/breakdown of `result.best` and the wall time.
+// Shared ending: stores score/breakdown of `result.best` and the wall time. The score is
+// computed from scratch (Problem::score) unless the solver passes `scored`: the score of
+// result.best it has itself just computed from scratch (sls, which checks a zero-cost
+// assignment that way before it stops), so the same evaluation is not made twice.
 void finish_result(const csp::Problem& problem, const SolveContext& context,
-                   const Budget& budget, SolverResult& result);
+                   const Budget& budget, SolverResult& result,
+                   std::optional<csp::Score> scored = std::nullopt);
 
 }  // namespace sightline::solvers

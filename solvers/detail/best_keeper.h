@@ -32,7 +32,8 @@ class BestKeeper {
 
   const csp::Score& score() const { return score_; }
 
-  // `current` (the assignment as it is now) is strictly better than the best.
+  // `current` (the assignment as it is now) becomes the best, scored `score`: it is
+  // strictly better than the best, or as good and the one the search ends on.
   void improved(const csp::Score& score) {
     score_ = score;
     log_.clear();

@@ -33,7 +33,8 @@ DiscreteSearch::DiscreteSearch(const csp::Problem& problem, const SlsSolver::Opt
                                          : 10 * static_cast<std::uint64_t>(n_) + 1000;
 }
 
-void DiscreteSearch::run(std::span<const double> start, SolverResult& result) {
+std::optional<csp::Score> DiscreteSearch::run(std::span<const double> start,
+                                              SolverResult& result) {
   csp::Assignment values;
   prepare_start(problem_, start, values);
   make_groups_permutations(values);
@@ -47,6 +48,7 @@ void DiscreteSearch::run(std::span<const double> start, SolverResult& result) {
   result.iterations = iterations_;
   result.stop = stop_;
   result.message = message_;
+  return target_score_;
 }
 
 void DiscreteSearch::make_groups_permutations(csp::Assignment& values) {
@@ -155,7 +157,10 @@ bool DiscreteSearch::check_target() {
     evaluator_->resynchronise();  // the incremental sums had drifted: start them afresh
     return false;
   }
-  if (exact.better_than(best_.score())) best_.improved(exact);
+  // The current assignment becomes the best even when an earlier one scored as well: the
+  // search ends on it, and target_score_ is its score, computed from scratch just now.
+  best_.improved(exact);
+  target_score_ = exact;
   stopped_ = true;
   stop_ = StopReason::kTargetReached;
   return true;
@@ -250,11 +255,12 @@ void DiscreteSearch::main_loop() {
   }
 }
 
-void run_discrete_sls(const csp::Problem& problem, std::span<const double> start,
-                      const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
-                      SolverResult& result) {
+std::optional<csp::Score> run_discrete_sls(const csp::Problem& problem,
+                                           std::span<const double> start,
+                                           const SlsSolver::Options& options, std::uint64_t seed,
+                                           Budget& budget, SolverResult& result) {
   DiscreteSearch search(problem, options, seed, budget);
-  search.run(start, result);
+  return search.run(start, result);
 }
 
 }  // namespace sightline::solvers::detail

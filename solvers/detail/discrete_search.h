@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,7 +36,10 @@ class DiscreteSearch {
   DiscreteSearch(const csp::Problem& problem, const SlsSolver::Options& options, std::uint64_t seed,
                  Budget& budget);
 
-  void run(std::span<const double> start, SolverResult& result);
+  // Fills result.best, evaluations, iterations, stop and message. Returns the score of
+  // result.best when the search stopped on a zero-cost assignment, which it has checked
+  // from scratch (Problem::score), and nothing otherwise.
+  std::optional<csp::Score> run(std::span<const double> start, SolverResult& result);
 
  private:
   // --- runs and restarts ---------------------------------------------------------------
@@ -167,6 +171,7 @@ class DiscreteSearch {
   std::uint64_t evaluations_ = 0, iterations_ = 0;
   std::uint64_t stall_ = 0, stall_limit_ = 0, restarts_used_ = 0;
   bool stopped_ = false;
+  std::optional<csp::Score> target_score_;  // set by check_target when it stops the search
   StopReason stop_ = StopReason::kCompleted;
   std::string message_;
 };

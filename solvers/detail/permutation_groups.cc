@@ -19,17 +19,21 @@ bool same_values(const csp::Domain& a, const csp::Domain& b) {
   return true;
 }
 
-// The values hard unary constraints allow `v` among `values`; empty when `v` has no hard
-// unary constraint (pin() only looks for a single allowed value).
+// Per variable: does a hard unary constraint bear on it? One pass over the constraints, so
+// that the usual variable, with none, costs pin() a single look-up.
+std::vector<char> hard_unary_variables(const csp::Problem& problem) {
+  std::vector<char> marked(problem.num_variables(), 0);
+  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
+    const csp::Constraint& c = problem.constraint(id);
+    if (c.is_hard() && c.scope().size() == 1) marked[c.scope()[0]] = 1;
+  }
+  return marked;
+}
+
+// The values hard unary constraints allow `v` among `values` (`v` has at least one).
 std::vector<double> allowed_values(const csp::Problem& problem, csp::VariableId v,
                                    const std::vector<double>& values, csp::Assignment& scratch) {
   std::vector<double> allowed;
-  const auto incidences = problem.incidences(v);
-  const bool has_unary = std::any_of(incidences.begin(), incidences.end(), [&](const auto& i) {
-    const csp::Constraint& c = problem.constraint(i.constraint);
-    return c.is_hard() && c.scope().size() == 1;
-  });
-  if (!has_unary) return allowed;  // cheap answer for the usual case; pin() needs size 1 only
   if (scratch.empty()) scratch = problem.default_assignment();  // first time it is needed
   const double kept = scratch[v];
   for (double value : values) {
@@ -50,11 +54,13 @@ std::vector<double> allowed_values(const csp::Problem& problem, csp::VariableId 
 
 // Pins the group's variables that hard unary constraints allow a single value, and lists
 // the rest as free (see the header). No pins at all when two would share a value.
-void pin(const csp::Problem& problem, PermutationGroup& group, csp::Assignment& scratch) {
+void pin(const csp::Problem& problem, const std::vector<char>& hard_unary,
+         PermutationGroup& group, csp::Assignment& scratch) {
   std::vector<char> value_pinned(group.values.size(), 0);
   bool consistent = true;
   for (csp::VariableId v : group.variables) {
     if (group.values.size() < 2) break;
+    if (!hard_unary[v]) continue;  // the usual case: nothing can pin it
     const std::vector<double> allowed = allowed_values(problem, v, group.values, scratch);
     if (allowed.size() != 1) continue;
     const auto k = static_cast<std::size_t>(
@@ -86,6 +92,7 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
   std::vector<PermutationGroup> groups;
   std::vector<char> taken(problem.num_variables(), 0);
   csp::Assignment scratch;  // filled by allowed_values when a hard unary constraint needs it
+  std::vector<char> hard_unary;  // filled when the first group is found
   for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const auto* all_different = dynamic_cast<const csp::AllDifferent*>(&problem.constraint(id));
     if (!all_different || !all_different->is_hard() || !all_different->has_zero_offsets()) {
@@ -112,7 +119,8 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
     if (!std::is_sorted(group.values.begin(), group.values.end())) {
       std::sort(group.values.begin(), group.values.end());
     }
-    pin(problem, group, scratch);
+    if (hard_unary.empty()) hard_unary = hard_unary_variables(problem);
+    pin(problem, hard_unary, group, scratch);
     groups.push_back(std::move(group));
   }
   return groups;

@@ -1,10 +1,12 @@
 // The two search loops behind SlsSolver (see solvers/sls.h for what they do and why):
 // min-conflicts with swaps for discrete problems, random-neighbourhood search for continuous
 // and mixed ones. Each fills result.best, evaluations, iterations, stop and message; the
-// caller scores the result (finish_result).
+// caller scores the result (finish_result), except that run_discrete_sls returns the score
+// of result.best when it has computed it from scratch already (it stopped at zero cost).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -12,9 +14,10 @@
 
 namespace sightline::solvers::detail {
 
-void run_discrete_sls(const csp::Problem& problem, std::span<const double> start,
-                      const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
-                      SolverResult& result);
+std::optional<csp::Score> run_discrete_sls(const csp::Problem& problem,
+                                           std::span<const double> start,
+                                           const SlsSolver::Options& options, std::uint64_t seed,
+                                           Budget& budget, SolverResult& result);
 
 // `current` and `candidate` are scratch buffers kept by the caller between solves.
 void run_continuous_sls(const csp::Problem& problem, std::span<const double> start,

@@ -84,6 +84,33 @@ TEST(PermutationGroups, AreFoundOnlyForHardZeroOffsetAllDifferentsOverExactlyThe
   EXPECT_EQ(groups[1].values, (std::vector<double>{2, 5, 9}));
 }
 
+TEST(PermutationGroups, PinTheVariablesThatHardUnaryConstraintsAllowOneValue) {
+  csp::Problem p;
+  std::vector<csp::VariableId> a;
+  for (int i = 0; i < 5; ++i)
+    a.push_back(p.add_variable("a" + std::to_string(i), csp::Domain::integer_range(0, 4)));
+  p.add_constraint(all_different(a));
+  const auto hard = [](csp::Problem& q, csp::VariableId v, auto allowed) {
+    add(q, {v}, [allowed](const auto& x) { return allowed(x[0]) ? 0.0 : 1.0; }, 1, true);
+  };
+  hard(p, a[3], [](double x) { return x == 1; });           // one value: pinned
+  hard(p, a[1], [](double x) { return x == 0 || x == 4; });  // two values: free
+  add(p, {a[0]}, [](const auto& x) { return x[0] == 2 ? 0.0 : 1.0; });  // soft: free
+  auto groups = detail::find_permutation_groups(p);
+  ASSERT_EQ(groups.size(), 1u);
+  using Pin = std::pair<csp::VariableId, double>;
+  EXPECT_EQ(groups[0].pinned, (std::vector<Pin>{{a[3], 1.0}}));
+  EXPECT_EQ(groups[0].free, (std::vector<csp::VariableId>{a[0], a[1], a[2], a[4]}));
+  EXPECT_EQ(groups[0].free_values, (std::vector<double>{0, 2, 3, 4}));
+
+  // Two variables pinned to the same value cannot both hold: no pins at all.
+  hard(p, a[2], [](double x) { return x == 1; });
+  groups = detail::find_permutation_groups(p);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_TRUE(groups[0].pinned.empty());
+  EXPECT_EQ(groups[0].free, a);
+}
+
 TEST(BestKeeper, ReconstructsTheBestFromItsUndoLogLikeAnExplicitCopy) {
   std::mt19937_64 random(5);
   for (std::size_t log_limit : {3u, 50u, 100000u}) {
@@ -172,6 +199,40 @@ TEST(SlsSolver, StopsAtZeroCostOnlyWhenAsked) {
   r = running.solve(p, std::vector<double>{0, 0});
   EXPECT_EQ(r.stop, StopReason::kCompleted);
   EXPECT_EQ(r.cost(), 0);
+}
+
+// When sls stops on a zero-cost assignment it has scored that assignment from scratch, and
+// reports that score instead of computing it again: it must be the assignment's true score,
+// hard and soft parts alike, and the breakdown must agree with it.
+TEST(SlsSolver, ReportsTheTrueScoreOfTheAssignmentItStopsOn) {
+  for (int k : {5, 12, 40}) {
+    csp::Problem p;
+    std::vector<csp::VariableId> vars;
+    for (int i = 0; i < k; ++i)
+      vars.push_back(p.add_variable("v" + std::to_string(i), csp::Domain::integer_range(0, k - 1)));
+    p.add_constraint(all_different(vars));
+    // A pin (hard unary), and soft wishes that the permutation v_i = (i + 2) mod k meets.
+    add(p, {vars[0]}, [](const auto& v) { return v[0] == 2 ? 0.0 : 1.0; }, 1, true);
+    for (int i = 1; i < k; ++i) {
+      add(p, {vars[i]}, [i, k](const auto& v) { return std::abs(v[0] - (i + 2) % k); }, 0.5);
+    }
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      SlsSolver sls = make_sls();
+      SolveContext context;
+      context.seed = seed;
+      const SolverResult r = sls.solve(p, std::vector<double>(k, 0.0), context);
+      ASSERT_EQ(r.stop, StopReason::kTargetReached) << "k " << k << ", seed " << seed;
+      const csp::Score truth = p.score(r.best);
+      EXPECT_EQ(r.score.hard, truth.hard);
+      EXPECT_EQ(r.score.soft, truth.soft);
+      EXPECT_EQ(truth.hard, 0);
+      EXPECT_EQ(truth.soft, 0);
+      EXPECT_EQ(r.best[vars[0]], 2);
+      double breakdown_total = 0;
+      for (const csp::ConstraintCost& c : r.breakdown) breakdown_total += c.cost;
+      EXPECT_EQ(breakdown_total, 0);
+    }
+  }
 }
 
 TEST(SlsSolver, StopsAtEachLimitOnAProblemItCannotSolve) {
