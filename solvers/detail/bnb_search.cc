@@ -66,6 +66,15 @@ void BranchAndBoundSearch::setup(const csp::Problem& problem, std::span<const do
   evaluations_ = 0;
   full_evaluations_ = 0;
   stopped_ = false;
+  next_budget_check_ = kPropagationStride;
+}
+
+bool BranchAndBoundSearch::propagation_stopped() {
+  if (stopped_) return true;
+  if (evaluations_ < next_budget_check_) return false;
+  next_budget_check_ = evaluations_ + kPropagationStride;
+  if (budget_->exhausted(full_evaluations_, nodes_)) stopped_ = true;
+  return stopped_;
 }
 
 void BranchAndBoundSearch::kill(csp::VariableId v, std::uint32_t index) {
@@ -119,6 +128,7 @@ bool BranchAndBoundSearch::check_hard_partial(csp::ConstraintId c) {
     assigned_[w] = 1;
     for (std::uint32_t slot = offset_[w]; slot < offset_[w + 1]; ++slot) {
       if (!alive_[slot]) continue;
+      if (propagation_stopped()) break;
       values_[w] = domain_values_[slot];
       ++evaluations_;
       if (con.min_violation(values_, assigned_) > 0) {
@@ -128,6 +138,7 @@ bool BranchAndBoundSearch::check_hard_partial(csp::ConstraintId c) {
     }
     assigned_[w] = 0;
     values_[w] = saved;
+    if (stopped_) return false;
   }
   return true;
 }
@@ -152,7 +163,7 @@ void BranchAndBoundSearch::compute_contribution(csp::ConstraintId c, csp::Variab
   for (std::uint32_t slot = offset_[t]; slot < offset_[t + 1]; ++slot) {
     double& bound = out[slot - offset_[t]];
     bound = 0;
-    if (!alive_[slot]) continue;
+    if (!alive_[slot] || propagation_stopped()) continue;  // stopped: the node fails anyway
     values_[t] = domain_values_[slot];
     if (other != kNoTarget && alive_count_[other] <= 64) {
       const double saved_o = values_[other];
@@ -259,7 +270,7 @@ bool BranchAndBoundSearch::initial_propagation() {
     if (con.scope().size() >= 2 && !con.is_hard()) retarget(c);
   }
   // min_soft_ starts at 0 for every variable, so future_min starts at 0 too.
-  return refresh_touched();
+  return !stopped_ && refresh_touched();
 }
 
 bool BranchAndBoundSearch::assign(csp::VariableId u, std::uint32_t index) {
@@ -290,7 +301,7 @@ bool BranchAndBoundSearch::assign(csp::VariableId u, std::uint32_t index) {
       return false;
     }
   }
-  if (!refresh_touched()) return false;
+  if (stopped_ || !refresh_touched()) return false;
   return !prunes(lower_bound());
 }
 

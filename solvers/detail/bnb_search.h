@@ -52,6 +52,13 @@ class BranchAndBoundSearch {
   void touch(csp::VariableId v);
   bool refresh_touched();
   void undo_to(std::size_t mark);
+  // Propagation can run long on one node: forward checking a hard constraint over k
+  // variables of d values makes k d checks, each O(k) for a global one (an all_different
+  // over 1,000 queens: 10^6 checks of 1,000 keys at the root). So propagation also asks the
+  // budget, every kPropagationStride constraint checks; when it is spent, stopped_ is set
+  // and the node fails, which unwinds the search as a stop between branches does.
+  bool propagation_stopped();
+  static constexpr std::uint64_t kPropagationStride = 256;
   double lower_bound() const { return sums_.assigned_cost + sums_.future_min; }
   bool prunes(double bound) const {
     if (!have_incumbent_) return false;
@@ -101,6 +108,7 @@ class BranchAndBoundSearch {
   // reports and every evaluation limit counts, one candidate = one.
   std::uint64_t full_evaluations_ = 0;
   bool stopped_ = false;
+  std::uint64_t next_budget_check_ = 0;  // evaluations_ at which propagation asks again
 };
 
 }  // namespace sightline::solvers::detail
