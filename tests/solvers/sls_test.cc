@@ -29,14 +29,23 @@ std::unique_ptr<csp::AllDifferent> all_different(std::vector<csp::VariableId> sc
                                         AllDifferent::Measure::kVariables, 1.0, hard);
 }
 
+// `count` variables named prefix0, prefix1, ... over 0..values-1, tied by a hard
+// all_different; returns their ids.
+std::vector<csp::VariableId> add_all_different_variables(csp::Problem& p, const std::string& prefix,
+                                                         int count, int values) {
+  std::vector<csp::VariableId> vars;
+  for (int i = 0; i < count; ++i) {
+    vars.push_back(
+        p.add_variable(prefix + std::to_string(i), csp::Domain::integer_range(0, values - 1)));
+  }
+  p.add_constraint(all_different(vars));
+  return vars;
+}
+
 // k variables over 0..k-1 tied by a hard all_different, plus soft preferences.
 std::unique_ptr<csp::Problem> permutation_problem(int k) {
   auto p = std::make_unique<csp::Problem>("permutation");
-  std::vector<csp::VariableId> vars;
-  for (int i = 0; i < k; ++i) {
-    vars.push_back(p->add_variable("p" + std::to_string(i), csp::Domain::integer_range(0, k - 1)));
-  }
-  p->add_constraint(all_different(vars));
+  const std::vector<csp::VariableId> vars = add_all_different_variables(*p, "p", k, k);
   // Variable i prefers value (3 i) mod k.
   for (int i = 0; i < k; ++i) {
     add(
@@ -86,10 +95,7 @@ TEST(PermutationGroups, AreFoundOnlyForHardZeroOffsetAllDifferentsOverExactlyThe
 
 TEST(PermutationGroups, PinTheVariablesThatHardUnaryConstraintsAllowOneValue) {
   csp::Problem p;
-  std::vector<csp::VariableId> a;
-  for (int i = 0; i < 5; ++i)
-    a.push_back(p.add_variable("a" + std::to_string(i), csp::Domain::integer_range(0, 4)));
-  p.add_constraint(all_different(a));
+  const std::vector<csp::VariableId> a = add_all_different_variables(p, "a", 5, 5);
   const auto hard = [](csp::Problem& q, csp::VariableId v, auto allowed) {
     add(q, {v}, [allowed](const auto& x) { return allowed(x[0]) ? 0.0 : 1.0; }, 1, true);
   };
@@ -207,10 +213,7 @@ TEST(SlsSolver, StopsAtZeroCostOnlyWhenAsked) {
 TEST(SlsSolver, ReportsTheTrueScoreOfTheAssignmentItStopsOn) {
   for (int k : {5, 12, 40}) {
     csp::Problem p;
-    std::vector<csp::VariableId> vars;
-    for (int i = 0; i < k; ++i)
-      vars.push_back(p.add_variable("v" + std::to_string(i), csp::Domain::integer_range(0, k - 1)));
-    p.add_constraint(all_different(vars));
+    const std::vector<csp::VariableId> vars = add_all_different_variables(p, "v", k, k);
     // A pin (hard unary), and soft wishes that the permutation v_i = (i + 2) mod k meets.
     add(p, {vars[0]}, [](const auto& v) { return v[0] == 2 ? 0.0 : 1.0; }, 1, true);
     for (int i = 1; i < k; ++i) {
@@ -238,10 +241,7 @@ TEST(SlsSolver, ReportsTheTrueScoreOfTheAssignmentItStopsOn) {
 TEST(SlsSolver, StopsAtEachLimitOnAProblemItCannotSolve) {
   // 3-queens-like: three variables in 0..1 all different: always one conflict at least.
   csp::Problem p;
-  std::vector<csp::VariableId> vars;
-  for (int i = 0; i < 3; ++i)
-    vars.push_back(p.add_variable("v" + std::to_string(i), csp::Domain::integer_range(0, 1)));
-  p.add_constraint(all_different(vars));
+  add_all_different_variables(p, "v", 3, 2);
   SlsSolver sls = make_sls([](auto& o) { o.restarts = 1'000'000'000; });
   SolveContext context;
   context.limits.max_evaluations = 777;
