@@ -7,6 +7,12 @@ packages=(
   libeigen3-dev libboost-dev libboost-iostreams-dev libyaml-cpp-dev libceres-dev
   libmuparser-dev libcli11-dev libstb-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # Levels: meshes (assimp), Quake III .pk3 archives (libzip), triangle queries (Embree 3),
+  # navigation meshes for walks (Recast/Detour), and the corpus of 50 real maps.
+  libassimp-dev libzip-dev libembree-dev librecast-dev
+  openarena-088-data openarena-085-data
+  # WCSP: toulbar2's JSON .cfn files, and toulbar2 itself as a reference solver.
+  nlohmann-json3-dev toulbar2
 )
 missing=()
 for p in "${packages[@]}"; do
