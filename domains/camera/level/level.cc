@@ -85,8 +85,9 @@ void check_and_clean(const LevelSpec& spec, TriangleMesh& mesh) {
   mesh.triangles.resize(kept);
   if (mesh.triangles.empty()) {
     fail(spec, "has no solid triangles" +
-                   (dropped > 0 ? " (all " + std::to_string(dropped) + " triangles have zero area)"
-                                : std::string()));
+                   (dropped == 1   ? std::string(" (its only triangle has zero area)")
+                    : dropped > 1 ? " (all " + std::to_string(dropped) + " triangles have zero area)"
+                                  : std::string()));
   }
 }
 

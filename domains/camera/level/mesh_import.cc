@@ -69,7 +69,7 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
 // For people: assimp's own name for the reader it used ("glTF2 Importer" -> "glTF2"), with
 // the format version where the reader records one, else the name of the reader registered
 // for the extension, else the extension.
-std::string format_name(const Assimp::Importer& importer, const aiScene& scene, const std::string& file) {
+std::string reader_name(const Assimp::Importer& importer, const aiScene& scene, const std::string& file) {
   std::string name;
   std::string version;
   if (scene.mMetaData != nullptr) {
@@ -91,7 +91,7 @@ std::string format_name(const Assimp::Importer& importer, const aiScene& scene, 
   }
   if (name.empty()) name = extension.empty() ? std::string("unknown format") : extension;
   if (!version.empty()) name += " version " + version;
-  return name + " (assimp)";
+  return name;
 }
 
 // Every triangle of every mesh of every node, each through its node's global transform
@@ -100,6 +100,7 @@ std::string format_name(const Assimp::Importer& importer, const aiScene& scene, 
 // file's node depth is the file's to choose.
 TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, const LevelTransform& transform) {
   TriangleMesh out;
+  std::size_t skipped_primitives = 0;
   if (scene.mRootNode == nullptr) fail(spec, "has no node tree (assimp read no scene)");
   std::vector<std::pair<const aiNode*, Eigen::Matrix4d>> pending;
   pending.emplace_back(scene.mRootNode, Eigen::Matrix4d::Identity());
@@ -117,7 +118,10 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
       }
       const aiMesh& mesh = *scene.mMeshes[node->mMeshes[i]];
       // Points and lines block nothing; after aiProcess_SortByPType a mesh holds one kind.
-      if ((mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
+      if ((mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) {
+        skipped_primitives += mesh.mNumFaces;
+        continue;
+      }
       if (out.vertices.size() + mesh.mNumVertices > std::numeric_limits<std::uint32_t>::max()) {
         fail(spec, "has more than 2^32 vertices once its meshes are placed");
       }
@@ -135,6 +139,10 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c) pending.emplace_back(node->mChildren[c], global);
   }
+  if (out.empty() && skipped_primitives > 0) {
+    fail(spec, "has no solid triangles, only " + std::to_string(skipped_primitives) +
+                   " points and lines, which block nothing");
+  }
   return out;
 }
 
@@ -142,10 +150,21 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
 
 Level load_mesh_level(const LevelSpec& spec, const LevelTransform& transform) {
   Assimp::Importer importer;
-  // The raw import is validated (indices in range, a node tree, ...) so that nothing below
-  // reads past an array; the post-processing comes after the NaN check (see above).
-  const aiScene* scene = importer.ReadFile(spec.file, aiProcess_ValidateDataStructure);
+  const aiScene* scene = importer.ReadFile(spec.file, 0);
   if (scene == nullptr) fail(spec, std::string("could not be read by assimp: ") + importer.GetErrorString());
+  // A file that parses but holds no mesh (comments only, a scene of cameras) is said so
+  // here: assimp's validation would call it "aiScene::mNumMeshes is 0".
+  if (scene->mNumMeshes == 0) {
+    fail(spec, "holds no mesh, so no solid triangles (read by assimp as " + reader_name(importer, *scene, spec.file) + ")");
+  }
+  // Vertices without faces (a point cloud): validation would call it "Mesh contains no faces".
+  std::size_t faces = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) faces += scene->mMeshes[m]->mNumFaces;
+  if (faces == 0) fail(spec, "has no solid triangles: its meshes hold vertices but no faces");
+  // Validated before anything reads it (indices in range, a node tree, ...), so nothing
+  // below reads past an array; the other post-processing comes after the NaN check.
+  scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
+  if (scene == nullptr) fail(spec, std::string("is not valid for assimp: ") + importer.GetErrorString());
   check_vertices_finite(spec, *scene);
   // Triangulate: polygons (quads, n-gons) become triangles. JoinIdenticalVertices: an
   // indexed mesh, not three vertices per triangle. SortByPType: one primitive kind per
@@ -160,7 +179,7 @@ Level load_mesh_level(const LevelSpec& spec, const LevelTransform& transform) {
 
   Level level;
   level.file = spec.file;
-  level.format = format_name(importer, *scene, spec.file);
+  level.format = reader_name(importer, *scene, spec.file) + " (assimp)";
   level.transform = transform;
   level.mesh = collect_triangles(spec, *scene, transform);
   return level;
