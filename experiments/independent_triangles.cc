@@ -1,5 +1,7 @@
 #include "experiments/independent_triangles.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
