@@ -248,6 +248,14 @@ TEST_F(MeshLevelTest, GlbBinaryReadsLikeTheTextForm) {
   EXPECT_NE(level.format.find("glTF2"), std::string::npos) << level.format;
 }
 
+TEST_F(MeshLevelTest, GltfBufferInAFileBesideItIsFound) {
+  write("tri.bin", gltf_buffer());
+  const std::string file = write("external.gltf", gltf_json(kHierarchy, "tri.bin"));
+  expect_same_triangles(load_level(spec_for(file)).mesh, kHierarchyTriangles);
+  fs::remove(dir_ / "tri.bin");  // and a missing buffer file is assimp's error, not a crash
+  expect_input_error([&] { load_level(spec_for(file)); }, file, "assimp");
+}
+
 TEST_F(MeshLevelTest, ScaleAndUpZMapXYZToScaledXZMinusY) {
   const std::string file = write("tri.obj", "v 1 2 3\nv -4 5 6\nv 7 -8 9\nf 1 2 3\n");
   LevelSpec spec = spec_for(file);
