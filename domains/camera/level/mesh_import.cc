@@ -6,6 +6,7 @@
 #include <assimp/scene.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdint>
@@ -117,6 +118,10 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene,
     if (!global.allFinite()) {
       fail(spec, "has " + node_name(*node) + " whose transform is not finite");
     }
+    // A mirroring transform (negative determinant) turns counter-clockwise corners
+    // clockwise; swapping two corners keeps the front the side the file meant (glTF 2.0
+    // asks for exactly this). Both sides block sight either way.
+    const bool mirrored = global.topLeftCorner<3, 3>().determinant() < 0;
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
       if (node->mMeshes[i] >= scene.mNumMeshes) {
         fail(spec, "is corrupt: " + node_name(*node) + " refers to mesh " +
@@ -141,8 +146,11 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene,
       for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
         if (face.mNumIndices != 3) continue;
-        out.triangles.push_back(
-            {offset + face.mIndices[0], offset + face.mIndices[1], offset + face.mIndices[2]});
+        const std::uint32_t a = offset + face.mIndices[0];
+        const std::uint32_t b = offset + face.mIndices[1];
+        const std::uint32_t c = offset + face.mIndices[2];
+        out.triangles.push_back(mirrored ? std::array<std::uint32_t, 3>{a, c, b}
+                                         : std::array<std::uint32_t, 3>{a, b, c});
       }
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c)

@@ -260,6 +260,17 @@ TEST_F(MeshLevelTest, GltfWithArbitraryTransformsMatchesEigenComposition) {
   expect_same_triangles(load_level(spec_for(file)).mesh, {expected}, 1e-4);
 }
 
+TEST_F(MeshLevelTest, MirroringNodeKeepsTheFrontOfItsTriangles) {
+  // Scale -1 along x mirrors the triangle (front +z) to (0,0,0) (-1,0,0) (0,1,0); its front
+  // still faces +z, so the corners come out in the order that makes the normal +z again.
+  const std::string file = write("mirror.gltf", gltf_text(R"([{"mesh": 0, "scale": [-1, 1, 1]}])"));
+  const TriangleMesh mesh = load_level(spec_for(file)).mesh;
+  expect_same_triangles(
+      mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0, 0)}});
+  const Triangle t = triangles_of(mesh)[0];
+  EXPECT_GT((t[1] - t[0]).cross(t[2] - t[0]).z(), 0);
+}
+
 TEST_F(MeshLevelTest, GlbBinaryReadsLikeTheTextForm) {
   const std::string file = write("hierarchy.glb", glb(kHierarchy));
   const Level level = load_level(spec_for(file));
