@@ -76,8 +76,9 @@ void check_and_clean(const LevelSpec& spec, TriangleMesh& mesh) {
                        std::to_string(i) + " of " + std::to_string(vertex_count));
       }
     }
-    // Differences and products of floats in double: exactly zero for repeated corners and
-    // for corners that are collinear to float precision.
+    // The edges' cross product in double from float corners: for coordinates of similar
+    // magnitude the differences and products are exact, so it is zero exactly when the
+    // corners repeat or lie on one line.
     const Eigen::Vector3d a = mesh.vertices[tri[0]].cast<double>();
     const Eigen::Vector3d b = mesh.vertices[tri[1]].cast<double>();
     const Eigen::Vector3d c = mesh.vertices[tri[2]].cast<double>();
