@@ -28,7 +28,11 @@ struct WalkOptions {
   double agent_step = 0.56;        // metres: the highest ledge walked up
   double max_slope_degrees = 45;   // steeper floors are not walkable
   double cell_size = 0.15;         // metres: Recast's voxel size across
-  double cell_height = 0.1;        // metres: and up
+  // Metres up. Recast counts the step in whole cells (floor(step / cell_height)) and puts a
+  // floor's top at the cell above it, so a riser can read one cell taller than it is: at
+  // 0.05 the step counts 11 cells (0.55 m) and Quake III's 16-unit (0.5 m) risers always
+  // connect; at 0.1 it would count 5 cells and those risers would read 5 or 6.
+  double cell_height = 0.05;
   // The walk.
   double min_speed = 1.5, max_speed = 4.0;        // m/s, drawn per leg
   double min_seconds = 40, max_seconds = 120;     // per walk, drawn
