@@ -46,7 +46,8 @@ LevelTransform resolve_transform(const LevelSpec& spec) {
   transform.up = spec.up.value_or(quake3 ? UpAxis::kZ : UpAxis::kY);
   if (!(std::isfinite(transform.scale) && transform.scale > 0)) {
     std::ostringstream message;
-    message << "has scale " << transform.scale << ": expected a finite number > 0 (metres per file unit)";
+    message << "has scale " << transform.scale
+            << ": expected a finite number > 0 (metres per file unit)";
     fail(spec, message.str());
   }
   return transform;
@@ -62,7 +63,8 @@ void check_and_clean(const LevelSpec& spec, TriangleMesh& mesh) {
     if (!mesh.vertices[i].allFinite()) {
       fail(spec, "has a vertex that is not a finite number in the scene's frame: vertex " +
                      std::to_string(i) + " of " + std::to_string(vertex_count) + " is " +
-                     point_text(mesh.vertices[i]) + " (a NaN or infinity in the file, or a scale that overflows)");
+                     point_text(mesh.vertices[i]) +
+                     " (a NaN or infinity in the file, or a scale that overflows)");
     }
   }
   std::size_t kept = 0;
@@ -70,12 +72,13 @@ void check_and_clean(const LevelSpec& spec, TriangleMesh& mesh) {
     const auto& tri = mesh.triangles[t];
     for (std::uint32_t i : tri) {
       if (i >= vertex_count) {
-        fail(spec, "is corrupt: triangle " + std::to_string(t) + " uses vertex " + std::to_string(i) +
-                       " of " + std::to_string(vertex_count));
+        fail(spec, "is corrupt: triangle " + std::to_string(t) + " uses vertex " +
+                       std::to_string(i) + " of " + std::to_string(vertex_count));
       }
     }
-    // Differences and products of floats in double: exactly zero for repeated corners and
-    // for corners that are collinear to float precision.
+    // The edges' cross product in double from float corners: for coordinates of similar
+    // magnitude the differences and products are exact, so it is zero exactly when the
+    // corners repeat or lie on one line.
     const Eigen::Vector3d a = mesh.vertices[tri[0]].cast<double>();
     const Eigen::Vector3d b = mesh.vertices[tri[1]].cast<double>();
     const Eigen::Vector3d c = mesh.vertices[tri[2]].cast<double>();
@@ -84,10 +87,11 @@ void check_and_clean(const LevelSpec& spec, TriangleMesh& mesh) {
   const std::size_t dropped = mesh.triangles.size() - kept;
   mesh.triangles.resize(kept);
   if (mesh.triangles.empty()) {
-    fail(spec, "has no solid triangles" +
-                   (dropped == 1   ? std::string(" (its only triangle has zero area)")
-                    : dropped > 1 ? " (all " + std::to_string(dropped) + " triangles have zero area)"
-                                  : std::string()));
+    fail(spec,
+         "has no solid triangles" +
+             (dropped == 1  ? std::string(" (its only triangle has zero area)")
+              : dropped > 1 ? " (all " + std::to_string(dropped) + " triangles have zero area)"
+                            : std::string()));
   }
 }
 
@@ -111,7 +115,8 @@ Level load_level(const LevelSpec& spec) {
   level.file = spec.file;
   level.transform = transform;
   check_and_clean(spec, level.mesh);
-  level.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  level.load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return level;
 }
 

@@ -6,6 +6,7 @@
 #include <assimp/scene.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdint>
@@ -37,7 +38,9 @@ std::string node_name(const aiNode& node) {
   return "an unnamed node";
 }
 
-bool is_finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool is_finite(const aiVector3D& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // assimp's vertices as the file has them, before any post-processing: joining identical
 // vertices compares coordinates, and with a NaN among them it may merge the NaN into a
@@ -51,7 +54,8 @@ void check_vertices_finite(const LevelSpec& spec, const aiScene& scene) {
       if (is_finite(p)) continue;
       std::ostringstream message;
       message << "has a vertex that is not a finite number: " << mesh_name(mesh, m) << ", vertex "
-              << v << " of " << mesh.mNumVertices << ", is (" << p.x << ", " << p.y << ", " << p.z << ")";
+              << v << " of " << mesh.mNumVertices << ", is (" << p.x << ", " << p.y << ", " << p.z
+              << ")";
       fail(spec, message.str());
     }
   }
@@ -69,7 +73,8 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
 // For people: assimp's own name for the reader it used ("glTF2 Importer" -> "glTF2"), with
 // the format version where the reader records one, else the name of the reader registered
 // for the extension, else the extension.
-std::string reader_name(const Assimp::Importer& importer, const aiScene& scene, const std::string& file) {
+std::string reader_name(const Assimp::Importer& importer, const aiScene& scene,
+                        const std::string& file) {
   std::string name;
   std::string version;
   if (scene.mMetaData != nullptr) {
@@ -86,7 +91,8 @@ std::string reader_name(const Assimp::Importer& importer, const aiScene& scene, 
     }
   }
   const std::string suffix = " Importer";
-  if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+  if (name.size() > suffix.size() &&
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
     name.resize(name.size() - suffix.size());
   }
   if (name.empty()) name = extension.empty() ? std::string("unknown format") : extension;
@@ -98,7 +104,8 @@ std::string reader_name(const Assimp::Importer& importer, const aiScene& scene, 
 // (the product of its ancestors' and its own), then `transform`. A mesh that two nodes
 // reference is added twice, once per placement. An explicit stack, not recursion: a
 // file's node depth is the file's to choose.
-TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, const LevelTransform& transform) {
+TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene,
+                               const LevelTransform& transform) {
   TriangleMesh out;
   std::size_t skipped_primitives = 0;
   if (scene.mRootNode == nullptr) fail(spec, "has no node tree (assimp read no scene)");
@@ -111,10 +118,15 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
     if (!global.allFinite()) {
       fail(spec, "has " + node_name(*node) + " whose transform is not finite");
     }
+    // A mirroring transform (negative determinant) turns counter-clockwise corners
+    // clockwise; swapping two corners keeps the front the side the file meant (glTF 2.0
+    // asks for exactly this). Both sides block sight either way.
+    const bool mirrored = global.topLeftCorner<3, 3>().determinant() < 0;
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
       if (node->mMeshes[i] >= scene.mNumMeshes) {
         fail(spec, "is corrupt: " + node_name(*node) + " refers to mesh " +
-                       std::to_string(node->mMeshes[i]) + " of " + std::to_string(scene.mNumMeshes));
+                       std::to_string(node->mMeshes[i]) + " of " +
+                       std::to_string(scene.mNumMeshes));
       }
       const aiMesh& mesh = *scene.mMeshes[node->mMeshes[i]];
       // Points and lines block nothing; after aiProcess_SortByPType a mesh holds one kind.
@@ -134,10 +146,15 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
       for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
         if (face.mNumIndices != 3) continue;
-        out.triangles.push_back({offset + face.mIndices[0], offset + face.mIndices[1], offset + face.mIndices[2]});
+        const std::uint32_t a = offset + face.mIndices[0];
+        const std::uint32_t b = offset + face.mIndices[1];
+        const std::uint32_t c = offset + face.mIndices[2];
+        out.triangles.push_back(mirrored ? std::array<std::uint32_t, 3>{a, c, b}
+                                         : std::array<std::uint32_t, 3>{a, b, c});
       }
     }
-    for (unsigned c = 0; c < node->mNumChildren; ++c) pending.emplace_back(node->mChildren[c], global);
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+      pending.emplace_back(node->mChildren[c], global);
   }
   if (out.empty() && skipped_primitives > 0) {
     fail(spec, "has no solid triangles, only " + std::to_string(skipped_primitives) +
@@ -151,11 +168,13 @@ TriangleMesh collect_triangles(const LevelSpec& spec, const aiScene& scene, cons
 Level load_mesh_level(const LevelSpec& spec, const LevelTransform& transform) {
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(spec.file, 0);
-  if (scene == nullptr) fail(spec, std::string("could not be read by assimp: ") + importer.GetErrorString());
+  if (scene == nullptr)
+    fail(spec, std::string("could not be read by assimp: ") + importer.GetErrorString());
   // A file that parses but holds no mesh (comments only, a scene of cameras) is said so
   // here: assimp's validation would call it "aiScene::mNumMeshes is 0".
   if (scene->mNumMeshes == 0) {
-    fail(spec, "holds no mesh, so no solid triangles (read by assimp as " + reader_name(importer, *scene, spec.file) + ")");
+    fail(spec, "holds no mesh, so no solid triangles (read by assimp as " +
+                   reader_name(importer, *scene, spec.file) + ")");
   }
   // Vertices without faces (a point cloud): validation would call it "Mesh contains no faces".
   std::size_t faces = 0;
@@ -164,7 +183,8 @@ Level load_mesh_level(const LevelSpec& spec, const LevelTransform& transform) {
   // Validated before anything reads it (indices in range, a node tree, ...), so nothing
   // below reads past an array; the other post-processing comes after the NaN check.
   scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
-  if (scene == nullptr) fail(spec, std::string("is not valid for assimp: ") + importer.GetErrorString());
+  if (scene == nullptr)
+    fail(spec, std::string("is not valid for assimp: ") + importer.GetErrorString());
   check_vertices_finite(spec, *scene);
   // Triangulate: polygons (quads, n-gons) become triangles. JoinIdenticalVertices: an
   // indexed mesh, not three vertices per triangle. SortByPType: one primitive kind per

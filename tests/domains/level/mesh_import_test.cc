@@ -2,6 +2,8 @@
 // every source. Each test writes its own small files (OBJ, glTF 2.0 .gltf and .glb, PLY,
 // COLLADA) into a fresh folder and compares the loaded triangles with positions worked out
 // here, by hand or with Eigen from the file's own numbers.
+#include "domains/camera/level/mesh_import.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -16,7 +18,6 @@
 #include <vector>
 
 #include "domains/camera/level/level.h"
-#include "domains/camera/level/mesh_import.h"
 
 namespace sightline::camera {
 namespace {
@@ -28,7 +29,8 @@ class MeshLevelTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("sightline_mesh_") + info->test_suite_name() + "_" + info->name());
+    dir_ = fs::temp_directory_path() /
+           (std::string("sightline_mesh_") + info->test_suite_name() + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -52,7 +54,8 @@ LevelSpec spec_for(const std::string& file) {
 
 std::vector<Triangle> triangles_of(const TriangleMesh& mesh) {
   std::vector<Triangle> out;
-  for (std::uint32_t t = 0; t < mesh.size(); ++t) out.push_back({mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)});
+  for (std::uint32_t t = 0; t < mesh.size(); ++t)
+    out.push_back({mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)});
   return out;
 }
 
@@ -67,7 +70,8 @@ bool same_triangle(const Triangle& a, const Triangle& b, double tolerance) {
 }
 
 // Every expected triangle matched by its own loaded triangle, and nothing more.
-void expect_same_triangles(const TriangleMesh& mesh, const std::vector<Triangle>& expected, double tolerance = 1e-5) {
+void expect_same_triangles(const TriangleMesh& mesh, const std::vector<Triangle>& expected,
+                           double tolerance = 1e-5) {
   const auto actual = triangles_of(mesh);
   ASSERT_EQ(actual.size(), expected.size());
   std::vector<bool> used(actual.size(), false);
@@ -76,13 +80,14 @@ void expect_same_triangles(const TriangleMesh& mesh, const std::vector<Triangle>
     for (std::size_t i = 0; i < actual.size() && !found; ++i) {
       if (!used[i] && same_triangle(actual[i], want, tolerance)) used[i] = found = true;
     }
-    EXPECT_TRUE(found) << "no loaded triangle (" << want[0].transpose() << ") (" << want[1].transpose() << ") ("
-                       << want[2].transpose() << ")";
+    EXPECT_TRUE(found) << "no loaded triangle (" << want[0].transpose() << ") ("
+                       << want[1].transpose() << ") (" << want[2].transpose() << ")";
   }
 }
 
 // An InputError whose message names `file` and contains `expected`.
-void expect_input_error(const std::function<void()>& load, const std::string& file, const std::string& expected) {
+void expect_input_error(const std::function<void()>& load, const std::string& file,
+                        const std::string& expected) {
   try {
     load();
     ADD_FAILURE() << "no error for " << file;
@@ -96,7 +101,8 @@ void expect_input_error(const std::function<void()>& load, const std::string& fi
 // --- glTF 2.0 ----------------------------------------------------------------------------
 
 std::string base64(const std::string& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* const kAlphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
     std::uint32_t n = static_cast<std::uint8_t>(bytes[i]) << 16;
@@ -112,7 +118,8 @@ std::string base64(const std::string& bytes) {
 
 template <class T>
 void append_le(std::string& bytes, T value) {
-  const auto* p = reinterpret_cast<const char*>(&value);  // x86-64 and the glTF buffer: little-endian
+  const auto* p =
+      reinterpret_cast<const char*>(&value);  // x86-64 and the glTF buffer: little-endian
   bytes.append(p, sizeof value);
 }
 
@@ -132,9 +139,11 @@ std::string gltf_buffer() {
 std::string gltf_json(const std::string& nodes, const std::string& buffer_uri) {
   const std::string uri = buffer_uri.empty() ? "" : R"("uri": ")" + buffer_uri + R"(", )";
   return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
-    "nodes": )" + nodes + R"(,
+    "nodes": )" +
+         nodes + R"(,
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
-    "buffers": [{)" + uri + R"("byteLength": 44}],
+    "buffers": [{)" +
+         uri + R"("byteLength": 44}],
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
                     {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
@@ -182,7 +191,8 @@ TEST_F(MeshLevelTest, ObjQuadIsTriangulatedIntoTwoTrianglesOverItsCorners) {
   const Level level = load_level(spec_for(file));
   ASSERT_EQ(level.mesh.size(), 2u);
   const Eigen::Vector3d corners[] = {{1, 2, 3}, {4, 2, 3}, {4, 2, 7}, {1, 2, 7}};
-  const Eigen::Vector3d quad_normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
+  const Eigen::Vector3d quad_normal =
+      (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   double area = 0;
   for (const auto& t : triangles_of(level.mesh)) {
     for (const auto& p : t) {
@@ -200,10 +210,12 @@ TEST_F(MeshLevelTest, ObjQuadIsTriangulatedIntoTwoTrianglesOverItsCorners) {
 }
 
 TEST_F(MeshLevelTest, ObjTrianglesKeepTheirVerticesAndWinding) {
-  const std::string file = write("two.obj", "v 0 0 0\nv 2 0 0\nv 0 3 0\nv 5 5 5\nv 6 5 5\nv 5 5 4\nf 1 2 3\nf 4 6 5\n");
+  const std::string file =
+      write("two.obj", "v 0 0 0\nv 2 0 0\nv 0 3 0\nv 5 5 5\nv 6 5 5\nv 5 5 4\nf 1 2 3\nf 4 6 5\n");
   const Level level = load_mesh_level(spec_for(file), LevelTransform{});
-  expect_same_triangles(level.mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, 3, 0)},
-                                     {Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(5, 5, 4), Eigen::Vector3d(6, 5, 5)}});
+  expect_same_triangles(
+      level.mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, 3, 0)},
+                   {Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(5, 5, 4), Eigen::Vector3d(6, 5, 5)}});
 }
 
 TEST_F(MeshLevelTest, GltfNodeTransformsAreComposedDownTheHierarchyAndEachInstanceIsPlaced) {
@@ -216,29 +228,47 @@ TEST_F(MeshLevelTest, GltfNodeTransformsAreComposedDownTheHierarchyAndEachInstan
 TEST_F(MeshLevelTest, GltfWithArbitraryTransformsMatchesEigenComposition) {
   // A child given as a column-major matrix, under a parent with an oblique rotation and a
   // non-uniform scale, under a translated root: three levels, checked against Eigen.
-  const Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
-  Eigen::Affine3d child = Eigen::Translation3d(-1, 0.5, 2) * Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()) *
+  const Eigen::Quaterniond q =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  Eigen::Affine3d child = Eigen::Translation3d(-1, 0.5, 2) *
+                          Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()) *
                           Eigen::Scaling(0.5, 1.5, 1.0);
   std::string matrix = "[";
   for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) matrix += std::to_string(child.matrix()(r, c)) + (r == 3 && c == 3 ? "]" : ", ");
+    for (int r = 0; r < 4; ++r)
+      matrix += std::to_string(child.matrix()(r, c)) + (r == 3 && c == 3 ? "]" : ", ");
   }
   const std::string nodes = R"([{"translation": [0, -3, 4], "children": [1]},
-    {"rotation": [)" + std::to_string(q.x()) + ", " + std::to_string(q.y()) + ", " + std::to_string(q.z()) + ", " +
+    {"rotation": [)" + std::to_string(q.x()) +
+                            ", " + std::to_string(q.y()) + ", " + std::to_string(q.z()) + ", " +
                             std::to_string(q.w()) + R"(], "scale": [1, 2, 0.5], "children": [2]},
-    {"mesh": 0, "matrix": )" + matrix + "}]";
+    {"mesh": 0, "matrix": )" +
+                            matrix + "}]";
   const std::string file = write("deep.gltf", gltf_text(nodes));
   // The matrix as written (to_string keeps six decimals), so the comparison is exact up to float.
   for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) child.matrix()(r, c) = std::stod(std::to_string(child.matrix()(r, c)));
+    for (int r = 0; r < 4; ++r)
+      child.matrix()(r, c) = std::stod(std::to_string(child.matrix()(r, c)));
   }
-  const Eigen::Quaterniond written(std::stod(std::to_string(q.w())), std::stod(std::to_string(q.x())),
-                                   std::stod(std::to_string(q.y())), std::stod(std::to_string(q.z())));
-  const Eigen::Affine3d global = Eigen::Translation3d(0, -3, 4) * written.normalized() *
-                                 Eigen::Scaling(1.0, 2.0, 0.5) * child;
+  const Eigen::Quaterniond written(
+      std::stod(std::to_string(q.w())), std::stod(std::to_string(q.x())),
+      std::stod(std::to_string(q.y())), std::stod(std::to_string(q.z())));
+  const Eigen::Affine3d global =
+      Eigen::Translation3d(0, -3, 4) * written.normalized() * Eigen::Scaling(1.0, 2.0, 0.5) * child;
   Triangle expected;
   for (int i = 0; i < 3; ++i) expected[i] = global * kGltfTriangle[i];
   expect_same_triangles(load_level(spec_for(file)).mesh, {expected}, 1e-4);
+}
+
+TEST_F(MeshLevelTest, MirroringNodeKeepsTheFrontOfItsTriangles) {
+  // Scale -1 along x mirrors the triangle (front +z) to (0,0,0) (-1,0,0) (0,1,0); its front
+  // still faces +z, so the corners come out in the order that makes the normal +z again.
+  const std::string file = write("mirror.gltf", gltf_text(R"([{"mesh": 0, "scale": [-1, 1, 1]}])"));
+  const TriangleMesh mesh = load_level(spec_for(file)).mesh;
+  expect_same_triangles(
+      mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0, 0)}});
+  const Triangle t = triangles_of(mesh)[0];
+  EXPECT_GT((t[1] - t[0]).cross(t[2] - t[0]).z(), 0);
 }
 
 TEST_F(MeshLevelTest, GlbBinaryReadsLikeTheTextForm) {
@@ -246,6 +276,14 @@ TEST_F(MeshLevelTest, GlbBinaryReadsLikeTheTextForm) {
   const Level level = load_level(spec_for(file));
   expect_same_triangles(level.mesh, kHierarchyTriangles);
   EXPECT_NE(level.format.find("glTF2"), std::string::npos) << level.format;
+}
+
+TEST_F(MeshLevelTest, GltfBufferInAFileBesideItIsFound) {
+  write("tri.bin", gltf_buffer());
+  const std::string file = write("external.gltf", gltf_json(kHierarchy, "tri.bin"));
+  expect_same_triangles(load_level(spec_for(file)).mesh, kHierarchyTriangles);
+  fs::remove(dir_ / "tri.bin");  // and a missing buffer file is assimp's error, not a crash
+  expect_input_error([&] { load_level(spec_for(file)); }, file, "assimp");
 }
 
 TEST_F(MeshLevelTest, ScaleAndUpZMapXYZToScaledXZMinusY) {
@@ -259,15 +297,17 @@ TEST_F(MeshLevelTest, ScaleAndUpZMapXYZToScaledXZMinusY) {
   expect_same_triangles(level.mesh, {{Eigen::Vector3d(0.5, 1.5, -1), Eigen::Vector3d(-2, 3, -2.5),
                                       Eigen::Vector3d(3.5, 4.5, 4)}});
   spec.up = UpAxis::kY;
-  expect_same_triangles(load_level(spec).mesh, {{Eigen::Vector3d(0.5, 1, 1.5), Eigen::Vector3d(-2, 2.5, 3),
-                                                 Eigen::Vector3d(3.5, -4, 4.5)}});
+  expect_same_triangles(
+      load_level(spec).mesh,
+      {{Eigen::Vector3d(0.5, 1, 1.5), Eigen::Vector3d(-2, 2.5, 3), Eigen::Vector3d(3.5, -4, 4.5)}});
 }
 
 TEST_F(MeshLevelTest, PlyGoesToAssimpWithScaleOneAndYUpByDefault) {
-  const std::string file = write("tri.ply",
-                                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                 "end_header\n1 2 3\n4 2 3\n1 2 9\n3 0 1 2\n");
+  const std::string file =
+      write("tri.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "end_header\n1 2 3\n4 2 3\n1 2 9\n3 0 1 2\n");
   const Level level = load_level(spec_for(file));
   EXPECT_EQ(level.file, file);
   EXPECT_EQ(level.transform.scale, 1.0);
@@ -276,7 +316,8 @@ TEST_F(MeshLevelTest, PlyGoesToAssimpWithScaleOneAndYUpByDefault) {
   EXPECT_TRUE(level.map.empty());
   EXPECT_GE(level.load_seconds, 0.0);
   EXPECT_NE(level.format.find("PLY"), std::string::npos) << level.format;
-  expect_same_triangles(level.mesh, {{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 2, 3), Eigen::Vector3d(1, 2, 9)}});
+  expect_same_triangles(
+      level.mesh, {{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 2, 3), Eigen::Vector3d(1, 2, 9)}});
 }
 
 TEST_F(MeshLevelTest, ColladaUnitAndUpAxisAreAppliedByAssimpItself) {
@@ -300,7 +341,8 @@ TEST_F(MeshLevelTest, ColladaUnitAndUpAxisAreAppliedByAssimpItself) {
 )");
   const Level level = load_level(spec_for(file));
   EXPECT_NE(level.format.find("Collada"), std::string::npos) << level.format;
-  expect_same_triangles(level.mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 2, -1)}});
+  expect_same_triangles(level.mesh, {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                      Eigen::Vector3d(0, 2, -1)}});
 }
 
 TEST(IsQuake3Level, BspAndPk3InAnyCaseAndNothingElse) {
@@ -316,7 +358,8 @@ TEST(IsQuake3Level, BspAndPk3InAnyCaseAndNothingElse) {
 TEST(UpAxis, ReadsYAndZOnlyAndWritesThemBack) {
   EXPECT_EQ(up_axis_from_string("y"), UpAxis::kY);
   EXPECT_EQ(up_axis_from_string("z"), UpAxis::kZ);
-  for (const char* bad : {"", "x", "Y", "Z", "-z", "zz", "y "}) EXPECT_FALSE(up_axis_from_string(bad)) << bad;
+  for (const char* bad : {"", "x", "Y", "Z", "-z", "zz", "y "})
+    EXPECT_FALSE(up_axis_from_string(bad)) << bad;
   EXPECT_STREQ(to_string(UpAxis::kY), "y");
   EXPECT_STREQ(to_string(UpAxis::kZ), "z");
 }
@@ -332,20 +375,23 @@ TEST_F(MeshLevelTest, MissingFileIsReportedAtTheScenesLevelLine) {
   } catch (const csp::InputError& error) {
     EXPECT_EQ(error.where().file, "scenes/atrium.yaml");
     EXPECT_EQ(error.where().line, 12);
-    EXPECT_EQ(std::string(error.what()), "scenes/atrium.yaml:12: level file '" + spec.file + "' does not exist");
+    EXPECT_EQ(std::string(error.what()),
+              "scenes/atrium.yaml:12: level file '" + spec.file + "' does not exist");
   }
   spec.where = {};  // not from a scene: the level file itself is the location
   expect_input_error([&] { load_level(spec); }, spec.file, "does not exist");
   spec.file = dir_.string();
   expect_input_error([&] { load_level(spec); }, spec.file, "is a directory");
-  spec.file = (dir_ / "nowhere.obj").string();  // the assimp branch alone, without the existence check
+  spec.file =
+      (dir_ / "nowhere.obj").string();  // the assimp branch alone, without the existence check
   expect_input_error([&] { load_mesh_level(spec, LevelTransform{}); }, spec.file, "assimp");
 }
 
 TEST_F(MeshLevelTest, FilesAssimpCannotReadGiveItsReason) {
   std::string garbage;
   for (int i = 0; i < 300; ++i) garbage += static_cast<char>((i * 7919 + 13) % 256);
-  for (const char* name : {"garbage.obj", "garbage.glb", "garbage.gltf", "garbage.ply", "garbage.xyz"}) {
+  for (const char* name :
+       {"garbage.obj", "garbage.glb", "garbage.gltf", "garbage.ply", "garbage.xyz"}) {
     const std::string file = write(name, garbage);
     expect_input_error([&] { load_level(spec_for(file)); }, file, "assimp");
   }
@@ -356,7 +402,8 @@ TEST_F(MeshLevelTest, FilesAssimpCannotReadGiveItsReason) {
 
 TEST_F(MeshLevelTest, NanOrInfiniteVertexNamesTheVertex) {
   for (const char* value : {"nan", "-nan", "inf", "-inf"}) {
-    const std::string file = write("bad.obj", std::string("v 0 0 0\nv ") + value + " 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string file =
+        write("bad.obj", std::string("v 0 0 0\nv ") + value + " 0 0\nv 0 1 0\nf 1 2 3\n");
     expect_input_error([&] { load_level(spec_for(file)); }, file, "vertex 1 of 3");
     expect_input_error([&] { load_level(spec_for(file)); }, file, "not a finite number");
   }
@@ -371,7 +418,8 @@ TEST_F(MeshLevelTest, ScaleThatOverflowsFloatIsReported) {
 
 TEST_F(MeshLevelTest, ScaleMustBeFiniteAndPositive) {
   const std::string file = write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  for (double scale : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (double scale : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::infinity()}) {
     LevelSpec spec = spec_for(file);
     spec.scale = scale;
     expect_input_error([&] { load_level(spec); }, file, "scale");
@@ -380,27 +428,35 @@ TEST_F(MeshLevelTest, ScaleMustBeFiniteAndPositive) {
 
 TEST_F(MeshLevelTest, PointsLinesAndEmptyFilesHaveNoSolidTriangles) {
   const std::string lines = write("lines.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2\nl 2 3\np 3\n");
-  expect_input_error([&] { load_level(spec_for(lines)); }, lines, "has no solid triangles, only 3 points and lines");
-  const std::string points = write("points.ply",
-                                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                   "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
-  expect_input_error([&] { load_level(spec_for(points)); }, points, "has no solid triangles: its meshes hold vertices but no faces");
+  expect_input_error([&] { load_level(spec_for(lines)); }, lines,
+                     "has no solid triangles, only 3 points and lines");
+  const std::string points =
+      write("points.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  expect_input_error([&] { load_level(spec_for(points)); }, points,
+                     "has no solid triangles: its meshes hold vertices but no faces");
   // Comments only: assimp reads no mesh at all (with fewer than 16 bytes its OBJ reader
   // refuses the file outright, which says so too).
-  const std::string comments = write("comments.obj", "# nothing here\n# only comments, no geometry at all\n");
-  expect_input_error([&] { load_level(spec_for(comments)); }, comments, "holds no mesh, so no solid triangles");
+  const std::string comments =
+      write("comments.obj", "# nothing here\n# only comments, no geometry at all\n");
+  expect_input_error([&] { load_level(spec_for(comments)); }, comments,
+                     "holds no mesh, so no solid triangles");
   const std::string empty = write("empty.obj", "");
   expect_input_error([&] { load_level(spec_for(empty)); }, empty, "could not be read by assimp");
 }
 
 TEST_F(MeshLevelTest, ZeroAreaTrianglesAreDroppedAndALevelOfOnlyThoseIsRejected) {
   // Collinear corners, and a triangle whose corners are one point.
-  const std::string flat = write("flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 5 5 5\nf 1 2 3\nf 4 4 4\n");
-  expect_input_error([&] { load_level(spec_for(flat)); }, flat, "has no solid triangles (all 2 triangles have zero area)");
-  const std::string mixed =
-      write("mixed.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\nf 4 5 6\n");
-  expect_same_triangles(load_level(spec_for(mixed)).mesh,
-                        {{Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(0, 1, 1)}});
+  const std::string flat =
+      write("flat.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 5 5 5\nf 1 2 3\nf 4 4 4\n");
+  expect_input_error([&] { load_level(spec_for(flat)); }, flat,
+                     "has no solid triangles (all 2 triangles have zero area)");
+  const std::string mixed = write(
+      "mixed.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\nf 4 5 6\n");
+  expect_same_triangles(
+      load_level(spec_for(mixed)).mesh,
+      {{Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(0, 1, 1)}});
 }
 
 }  // namespace
