@@ -1,6 +1,5 @@
 // FloorProbe against brute force written here (signed volumes over every triangle): random
-// triangle soups, random segments and vertical rays, on a grid with cells much smaller
-// than the triangles and much larger.
+// triangle soups of small and large triangles, random segments and vertical rays.
 #include "experiments/floor_probe.h"
 
 #include <gtest/gtest.h>
@@ -71,7 +70,7 @@ TEST_P(FloorProbeAgainstBruteForce, AnswersEverySegmentAndRayAlike) {
     const auto got = probe.floor_below(p.x(), p.z(), p.y(), low.y());
     ASSERT_EQ(got.has_value(), first.has_value()) << p.transpose();
     if (got) {
-      EXPECT_NEAR(*got, p.y() - 4 * *first, 1e-6);
+      EXPECT_NEAR(*got, p.y() - 4 * *first, 1e-4);  // Embree works in float
     }
     floors += first.has_value();
   }

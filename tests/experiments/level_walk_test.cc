@@ -5,6 +5,8 @@
 // the generator's probe, not Recast, not Embree).
 #include "experiments/level_walk.h"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -12,6 +14,8 @@
 
 #include <cmath>
 #include <string>
+
+#include "domains/camera/level/level.h"
 
 namespace sightline::experiments {
 namespace {
@@ -340,6 +344,36 @@ TEST(WalkSceneYaml, WritesTheSceneFormatWithTheLevelAndEveryKeyframe) {
   EXPECT_FALSE(bare["level"]["scale"]);
   EXPECT_FALSE(bare["description"]);
 }
+
+// Real levels: Quake III maps from Debian's OpenArena data (skipped where not installed).
+struct InstalledMap {
+  const char* pk3;
+  const char* map;
+};
+class GenerateWalksOnQuake3Map : public ::testing::TestWithParam<InstalledMap> {};
+
+TEST_P(GenerateWalksOnQuake3Map, KeyframesStandOnFloorsWithHeadroomAndLegsClearKneesAndChest) {
+  const std::string pk3 = std::string("/usr/share/games/openarena/baseoa/") + GetParam().pk3;
+  if (!std::filesystem::exists(pk3)) GTEST_SKIP() << pk3 << " is not installed";
+  camera::LevelSpec spec;
+  spec.file = pk3;
+  spec.map = GetParam().map;
+  const camera::Level level = camera::load_level(spec);
+  WalkOptions options = three_walks(1);
+  options.walks = 2;
+  const LevelWalks result = generate_walks(level.mesh, options);
+  EXPECT_GT(result.navigation.region_area, 100.0);
+  for (const LevelWalk& walk : result.walks) {
+    expect_walkable(level.mesh, walk);
+    expect_person_like(walk, options);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(OpenArena, GenerateWalksOnQuake3Map,
+                         ::testing::Values(InstalledMap{"pak6-patch088.pk3", "oa_thor"},
+                                           InstalledMap{"pak6-patch088.pk3", "aggressor"},
+                                           InstalledMap{"pak6-patch088.pk3", "am_lavaarena"}),
+                         [](const auto& info) { return std::string(info.param.map); });
 
 }  // namespace
 }  // namespace sightline::experiments
