@@ -20,5 +20,6 @@ void add_compare_command(CLI::App& app);
 void add_scene_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_follow_command(CLI::App& app);
+void add_level_command(CLI::App& app);
 
 }  // namespace sightline::apps

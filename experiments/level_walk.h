@@ -9,11 +9,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "domains/camera/geometry/triangle_mesh.h"
+#include "domains/camera/level/level_transform.h"
 #include "domains/camera/trajectory.h"
 
 namespace sightline::experiments {
@@ -26,7 +28,11 @@ struct WalkOptions {
   double agent_step = 0.56;        // metres: the highest ledge walked up
   double max_slope_degrees = 45;   // steeper floors are not walkable
   double cell_size = 0.15;         // metres: Recast's voxel size across
-  double cell_height = 0.1;        // metres: and up
+  // Metres up. Recast counts the step in whole cells (floor(step / cell_height)) and puts a
+  // floor's top at the cell above it, so a riser can read one cell taller than it is: at
+  // 0.05 the step counts 11 cells (0.55 m) and Quake III's 16-unit (0.5 m) risers always
+  // connect; at 0.1 it would count 5 cells and those risers would read 5 or 6.
+  double cell_height = 0.05;
   // The walk.
   double min_speed = 1.5, max_speed = 4.0;        // m/s, drawn per leg
   double min_seconds = 40, max_seconds = 120;     // per walk, drawn
@@ -41,6 +47,26 @@ struct WalkOptions {
 struct LevelWalk {
   std::vector<camera::Keyframe> keyframes;  // feet on the floor, times from 0
   double length_metres = 0;                 // along the path
+  int stops = 0;                            // stops with a turn on the spot
+};
+
+// The navigation mesh the walks were planned on (navigation_mesh.h).
+struct NavigationMeshStats {
+  int grid_width = 0, grid_depth = 0;  // Recast's cells across x and z
+  double cell_size = 0;                // metres across (raised from the options on a big level)
+  double cell_height = 0;              // metres up
+  int polygons = 0;                    // all walkable polygons
+  int region_polygons = 0;             // polygons of the largest connected region
+  double walkable_area = 0;            // m^2, all polygons (seen from above)
+  double region_area = 0;              // m^2, the largest connected region
+  double build_seconds = 0;            // Recast and Detour, wall clock
+  std::string note;                    // what was adjusted and why (empty if nothing)
+};
+
+struct LevelWalks {
+  std::vector<LevelWalk> walks;
+  NavigationMeshStats navigation;
+  double seconds = 0;  // everything, wall clock
 };
 
 class WalkError : public std::runtime_error {
@@ -50,12 +76,15 @@ class WalkError : public std::runtime_error {
 
 // `options.walks` walks on `mesh` (metres, y up). Throws WalkError when the level has no
 // walkable region big enough for a walk (the message says what was found).
-std::vector<LevelWalk> generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options);
+// Throws std::invalid_argument when options.validate() fails.
+LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options);
 
 // A scene file (FORMATS.md) for one walk: `name`, a description, the `level:` block naming
-// `level_file` (as it should appear in the file) and `map`, and the keyframes.
+// `level_file` (as it should appear in the file), `map` (omitted when empty), `scale` and
+// `up` (omitted when absent: the format's defaults), and the keyframes (6 decimals).
 std::string walk_scene_yaml(const std::string& name, const std::string& description,
                             const std::string& level_file, const std::string& map,
-                            const LevelWalk& walk);
+                            const LevelWalk& walk, std::optional<double> scale = std::nullopt,
+                            std::optional<camera::UpAxis> up = std::nullopt);
 
 }  // namespace sightline::experiments

@@ -1,15 +1,14 @@
 // TriangleIndex (Embree) against brute force (triangle_brute_force.h, in double, sharing no
-// code with the index): random triangle soups (near the origin and 2 km away), a closed box
-// of 12 triangles (watertight edges and vertices, faces touched exactly, zero-length
-// segments), and a large procedural level (a 100k-triangle terrain with walls). Embree
-// works in float, so a segment that passes within 1e-5 of the scene's scale of a triangle's
-// boundary may go either way; such cases are counted and must be rare, every other answer
-// must agree exactly.
-//
-// The real-map check (oa_thor from OpenArena through load_level) waits for the Quake III
-// loader; the procedural level stands in for it meanwhile.
+// code with the index): random triangle soups (near the origin and 2 km away), a large
+// procedural level (a 100k-triangle terrain with walls) and a real map (OpenArena's oa_thor,
+// from Debian's openarena-088-data, through the Quake III loader). Embree works in float, so
+// a segment that passes within 1e-5 of the scene's scale of a triangle's boundary may go
+// either way; such cases are counted and must be rare, every other answer must agree
+// exactly. Also: queries from several threads, and queries allocate nothing (this program
+// counts operator new). The box and edge cases are in triangle_index_contact_test.cc.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -17,7 +16,9 @@
 #include <thread>
 
 #include "domains/camera/geometry/triangle_index.h"
+#include "domains/camera/level/q3_level.h"
 #include "triangle_brute_force.h"
+#include "triangle_test_meshes.h"
 
 // Counting allocations: the queries must not allocate (the camera calls them per frame).
 namespace {
@@ -39,87 +40,11 @@ namespace sightline::camera {
 namespace {
 
 using Eigen::Vector3d;
-
-// ---- meshes ----------------------------------------------------------------------------
-
-// n random triangles in the cube [-10, 10]^3 + offset, sides up to ~4 m; every 100th is
-// degenerate (two equal corners, or three collinear), which must never be hit by a ray but
-// still has a distance.
-TriangleMesh random_soup(std::mt19937_64& rng, int n, const Vector3d& offset) {
-  std::uniform_real_distribution<double> pos(-10, 10);
-  std::uniform_real_distribution<double> spread(-2, 2);
-  TriangleMesh mesh;
-  for (int i = 0; i < n; ++i) {
-    const Vector3d c(pos(rng), pos(rng), pos(rng));
-    Vector3d v[3];
-    for (auto& x : v) x = c + Vector3d(spread(rng), spread(rng), spread(rng));
-    if (i % 100 == 1) v[2] = v[1];
-    if (i % 100 == 2) v[2] = v[0] + 0.5 * (v[1] - v[0]);
-    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
-    for (const auto& x : v) mesh.vertices.push_back((x + offset).cast<float>());
-    mesh.triangles.push_back({base, base + 1, base + 2});
-  }
-  return mesh;
-}
-
-// A closed box: 8 shared corners, 12 triangles, front faces outward.
-TriangleMesh box_mesh(const Vector3d& lo, const Vector3d& hi) {
-  TriangleMesh mesh;
-  for (int k = 0; k < 8; ++k) {
-    mesh.vertices.emplace_back(Vector3d((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(),
-                                        (k & 4) ? hi.z() : lo.z())
-                                   .cast<float>());
-  }
-  // Each face as a quad (corner bits) counter-clockwise seen from outside.
-  const std::uint32_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5},   // -x, +x
-                                     {0, 1, 5, 4}, {2, 6, 7, 3},   // -y, +y
-                                     {0, 2, 3, 1}, {4, 5, 7, 6}};  // -z, +z
-  for (const auto& q : quads) {
-    mesh.triangles.push_back({q[0], q[1], q[2]});
-    mesh.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return mesh;
-}
-
-// A 100k-triangle level: a 224 x 224 heightfield over 160 m x 160 m (hills and ripples), and
-// 40 walls and pillars (closed boxes) standing on it.
-TriangleMesh procedural_level() {
-  TriangleMesh mesh;
-  const int n = 224;
-  const double extent = 80;
-  std::mt19937_64 rng(99);
-  std::uniform_real_distribution<double> noise(-0.1, 0.1);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const double x = -extent + 2 * extent * i / (n - 1);
-      const double z = -extent + 2 * extent * j / (n - 1);
-      const double y = 3 * std::sin(x / 7) * std::cos(z / 11) + 0.5 * std::sin(x / 1.3 + z / 2.1) +
-                       noise(rng);
-      mesh.vertices.emplace_back(Vector3d(x, y, z).cast<float>());
-    }
-  }
-  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(i * n + j); };
-  for (int i = 0; i + 1 < n; ++i) {
-    for (int j = 0; j + 1 < n; ++j) {
-      mesh.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
-      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
-    }
-  }
-  std::uniform_real_distribution<double> pos(-70, 70);
-  std::uniform_real_distribution<double> size(0.3, 12);
-  for (int k = 0; k < 40; ++k) {
-    const Vector3d lo(pos(rng), -4, pos(rng));
-    mesh.append(box_mesh(lo, lo + Vector3d(size(rng), 2 + size(rng) / 2, size(rng))));
-  }
-  return mesh;
-}
+using test_meshes::procedural_level;
+using test_meshes::random_soup;
+using test_meshes::scale_of;
 
 // ---- comparing with brute force --------------------------------------------------------
-
-double scale_of(const TriangleMesh& mesh) {
-  const Aabb b = mesh.bounds();
-  return std::max({1.0, b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
-}
 
 Vector3d unit_normal(const brute::Triangle& t) {
   return (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]).normalized();
@@ -128,6 +53,14 @@ Vector3d unit_normal(const brute::Triangle& t) {
 struct Tally {
   int segments = 0, blocked = 0, ambiguous = 0;
   int points = 0, within_limit = 0;
+  // Kept in the test's XML report (--gtest_output=xml), for reading the ambiguity rate.
+  void record() const {
+    ::testing::Test::RecordProperty("segments", segments);
+    ::testing::Test::RecordProperty("blocked", blocked);
+    ::testing::Test::RecordProperty("ambiguous", ambiguous);
+    ::testing::Test::RecordProperty("points", points);
+    ::testing::Test::RecordProperty("within_limit", within_limit);
+  }
 };
 
 // One segment: segment_blocked and first_hit against the brute-force verdict.
@@ -244,12 +177,12 @@ TEST(TriangleIndex, AgreesWithBruteForceOnRandomSoups) {
                              100 + trial, tally);
     if (HasFatalFailure()) return;
   }
+  tally.record();
   // Most segments meet something, many do not: both sides are exercised.
   EXPECT_GT(tally.blocked, tally.segments / 4);
   EXPECT_LT(tally.blocked, tally.segments * 9 / 10);
   EXPECT_LT(tally.ambiguous, tally.segments / 200) << tally.ambiguous << " ambiguous";
   EXPECT_GT(tally.within_limit, tally.points / 3);
-  RecordProperty("ambiguous", tally.ambiguous);
 }
 
 TEST(TriangleIndex, AgreesWithBruteForceFarFromTheOrigin) {
@@ -260,6 +193,7 @@ TEST(TriangleIndex, AgreesWithBruteForceFarFromTheOrigin) {
   Tally tally;
   compare_with_brute_force(mesh, {offset - Vector3d::Constant(13), offset + Vector3d::Constant(13)},
                            6000, 2000, 7, tally);
+  tally.record();
   EXPECT_GT(tally.blocked, tally.segments / 4);
   // The band is 2 cm wide here (1e-5 of 2 km) around triangles of about 2 m: wider, so more
   // segments fall in it than near the origin (about 2.7%).
@@ -274,9 +208,76 @@ TEST(TriangleIndex, AgreesWithBruteForceOnALargeProceduralLevel) {
   // points near the ground and walls.
   compare_with_brute_force(mesh, {Vector3d(-85, -5, -85), Vector3d(85, 12, 85)}, 1200, 600, 3,
                            tally);
+  tally.record();
   EXPECT_GT(tally.blocked, tally.segments / 4);
   EXPECT_LT(tally.ambiguous, tally.segments / 100) << tally.ambiguous << " ambiguous";
   EXPECT_GT(tally.within_limit, tally.points / 3);
+}
+
+TEST(TriangleIndex, AgreesWithBruteForceOnARealQuake3Map) {
+  LevelSpec spec;
+  spec.file = "/usr/share/games/openarena/baseoa/pak6-patch088.pk3";
+  spec.map = "oa_thor";
+  // load_level's defaults for .pk3 (FORMATS.md): 32 units to the metre, z up.
+  const Level level = load_quake3_level(spec, LevelTransform{0.03125, UpAxis::kZ});
+  ASSERT_GT(level.mesh.size(), 1000u);
+  Tally tally;
+  compare_with_brute_force(level.mesh, level.mesh.bounds(), 1500, 600, 4, tally);
+  RecordProperty("triangles", static_cast<int>(level.mesh.size()));
+  tally.record();
+  EXPECT_GT(tally.blocked, tally.segments / 4);
+  EXPECT_LT(tally.ambiguous, tally.segments / 100) << tally.ambiguous << " ambiguous";
+  EXPECT_GT(tally.within_limit, tally.points / 3);
+}
+
+TEST(TriangleIndex, QueriesFromSeveralThreadsAgreeWithOneThread) {
+  std::mt19937_64 rng(11);
+  const TriangleIndex index(random_soup(rng, 3000, Vector3d::Zero()));
+  std::uniform_real_distribution<double> pos(-12, 12);
+  std::vector<std::pair<Vector3d, Vector3d>> segments(4000);
+  for (auto& [a, b] : segments) {
+    a = Vector3d(pos(rng), pos(rng), pos(rng));
+    b = Vector3d(pos(rng), pos(rng), pos(rng));
+  }
+  // One answer per query: blocked, first-hit triangle, nearest triangle within 1 m.
+  auto answer = [&](std::size_t i) {
+    const auto& [a, b] = segments[i];
+    const auto hit = index.first_hit(a, b);
+    const auto near = index.nearest(a, 1.0);
+    return std::array<long, 3>{index.segment_blocked(a, b) ? 1 : 0,
+                               hit ? static_cast<long>(hit->triangle) : -1,
+                               near ? static_cast<long>(near->triangle) : -1};
+  };
+  std::vector<std::array<long, 3>> alone(segments.size()), together(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) alone[i] = answer(i);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 4; ++k) {
+    threads.emplace_back([&, k] {
+      for (std::size_t i = k; i < segments.size(); i += 4) together[i] = answer(i);
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(alone, together);
+}
+
+TEST(TriangleIndex, QueriesDoNotAllocate) {
+  std::mt19937_64 rng(12);
+  const TriangleIndex index(random_soup(rng, 2000, Vector3d::Zero()));
+  std::uniform_real_distribution<double> pos(-12, 12);
+  std::vector<Vector3d> points(2000);
+  for (auto& p : points) p = Vector3d(pos(rng), pos(rng), pos(rng));
+  double sink = 0;
+  index.segment_blocked(points[0], points[1]);  // first use on this thread
+  const long before = g_allocations.load();
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    sink += index.segment_blocked(points[i], points[i + 1]) ? 1 : 0;
+    if (const auto hit = index.first_hit(points[i], points[i + 1])) sink += hit->t;
+    if (const auto near = index.nearest(points[i], 0.2)) sink += near->distance;
+    if (const auto near = index.nearest(points[i])) sink += near->distance;
+    sink += index.segment_blocked(points[i], points[i]) ? 1 : 0;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_GT(sink, 0);
 }
 
 }  // namespace
