@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "level_load_bench: %s is not installed (scripts/install-deps.sh)\n", file.c_str());
       return 2;
     }
-    for (const std::string& map : sightline::camera::pk3_map_names(file)) {
+    for (const std::string& map : sightline::camera::Pk3Archive(file).map_entries()) {
       Row row;
       row.pack = pack;
       row.map = map;
