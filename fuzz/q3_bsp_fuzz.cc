@@ -53,7 +53,14 @@ void check_promises(const Bsp& bsp) {
                 tree.brushsides.size());
   }
   for (const auto& side : tree.brushsides) require(in(side.plane, tree.planes.size()));
-  for (const auto& plane : tree.planes) require(plane.normal.allFinite() && std::isfinite(plane.dist));
+  for (const auto& model : tree.models) {
+    require(model.mins.allFinite() && model.maxs.allFinite());
+    require(model.first_brush >= 0 && model.brush_count >= 0 &&
+            static_cast<std::uint64_t>(model.first_brush) + model.brush_count <=
+                tree.brushes.size());
+  }
+  for (const auto& plane : tree.planes)
+    require(plane.normal.allFinite() && std::isfinite(plane.dist));
 }
 
 }  // namespace

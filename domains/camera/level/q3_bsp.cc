@@ -17,18 +17,20 @@ constexpr int kLumpCount = 17;
 constexpr std::size_t kHeaderSize = 4 + 4 + kLumpCount * 8;
 
 // The lumps in header order, with the size of their records (1 for the text and blob lumps).
+// clang-format off
 enum Lump {
   kEntities = 0, kShaders, kPlanes, kNodes, kLeaves, kLeafFaces, kLeafBrushes, kModels,
   kBrushes, kBrushSides, kVertexes, kMeshVerts, kEffects, kFaces, kLightmaps, kLightVols,
   kVisData,
 };
+// clang-format on
 constexpr const char* kLumpNames[kLumpCount] = {
-    "entities", "shaders",    "planes",   "nodes",     "leaves",    "leaffaces",
-    "leafbrushes", "models",  "brushes",  "brushsides", "vertexes", "meshverts",
-    "effects",  "faces",      "lightmaps", "lightvols", "visdata"};
+    "entities",    "shaders", "planes",    "nodes",      "leaves",   "leaffaces",
+    "leafbrushes", "models",  "brushes",   "brushsides", "vertexes", "meshverts",
+    "effects",     "faces",   "lightmaps", "lightvols",  "visdata"};
 // Lightmaps are 128 x 128 RGB, light volumes 8 bytes; visdata is a blob with its own header.
-constexpr std::size_t kRecordSizes[kLumpCount] = {1, 72, 16,  36,    48, 4, 4, 40, 12,
-                                                  8, 44, 4,   72,    104, 128 * 128 * 3, 8, 1};
+constexpr std::size_t kRecordSizes[kLumpCount] = {
+    1, 72, 16, 36, 48, 4, 4, 40, 12, 8, 44, 4, 72, 104, 128 * 128 * 3, 8, 1};
 
 std::uint32_t u32_at(const unsigned char* p) {
   return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
@@ -78,20 +80,20 @@ class Parser {
     std::size_t index;
     std::string str() const { return std::string(what) + " " + std::to_string(index); }
   };
-  void check_index(std::int64_t index, std::size_t size, Who who,
-                   const char* field, const char* lump) const {
+  void check_index(std::int64_t index, std::size_t size, Who who, const char* field,
+                   const char* lump) const {
     if (index < 0 || static_cast<std::uint64_t>(index) >= size) {
       fail(who.str() + ": " + field + " " + std::to_string(index) + " out of range (the map has " +
            std::to_string(size) + " " + lump + ")");
     }
   }
   // first .. first + count (count >= 0) inside [0, size).
-  void check_range(std::int64_t first, std::int64_t count, std::size_t size,
-                   Who who, const char* what) const {
+  void check_range(std::int64_t first, std::int64_t count, std::size_t size, Who who,
+                   const char* what) const {
     if (first < 0 || count < 0 || static_cast<std::uint64_t>(first + count) > size) {
       fail(who.str() + ": " + what + " " + std::to_string(first) + " .. " +
-           std::to_string(first + count) + " out of range (the map has " +
-           std::to_string(size) + ")");
+           std::to_string(first + count) + " out of range (the map has " + std::to_string(size) +
+           ")");
     }
   }
   void check_finite(float value, Who who, const char* what) const {
@@ -115,8 +117,7 @@ class Parser {
       const std::int64_t offset = i32_at(entry);
       const std::int64_t length = i32_at(entry + 4);
       const std::string who = std::string("lump ") + kLumpNames[l];
-      if (offset < 0 || length < 0 ||
-          static_cast<std::uint64_t>(offset + length) > bytes_.size()) {
+      if (offset < 0 || length < 0 || static_cast<std::uint64_t>(offset + length) > bytes_.size()) {
         fail(who + " (offset " + std::to_string(offset) + ", length " + std::to_string(length) +
              ") is not inside the file (" + std::to_string(bytes_.size()) +
              " bytes): truncated or corrupt");
@@ -135,8 +136,9 @@ class Parser {
     const auto* begin = reinterpret_cast<const char*>(lump.data);
     // The text ends at its NUL terminator, or at the end of the lump.
     const void* nul = lump.count == 0 ? nullptr : std::memchr(begin, 0, lump.count);
-    const std::size_t size =
-        nul == nullptr ? lump.count : static_cast<std::size_t>(static_cast<const char*>(nul) - begin);
+    const std::size_t size = nul == nullptr
+                                 ? lump.count
+                                 : static_cast<std::size_t>(static_cast<const char*>(nul) - begin);
     bsp.entities.assign(begin, size);
   }
 
@@ -147,7 +149,8 @@ class Parser {
       const auto* name = reinterpret_cast<const char*>(lump.at(i));
       const void* nul = std::memchr(name, 0, 64);
       tree.shaders[i].name.assign(
-          name, nul == nullptr ? 64 : static_cast<std::size_t>(static_cast<const char*>(nul) - name));
+          name,
+          nul == nullptr ? 64 : static_cast<std::size_t>(static_cast<const char*>(nul) - name));
       tree.shaders[i].surface_flags = lump.i32(i, 64);
       tree.shaders[i].content_flags = lump.i32(i, 68);
     }
@@ -338,7 +341,8 @@ class Parser {
           }
         }
       }
-      if (int* skipped = skip_counter(bsp.tree.shaders[static_cast<std::size_t>(shader)], bsp.counts)) {
+      if (int* skipped =
+              skip_counter(bsp.tree.shaders[static_cast<std::size_t>(shader)], bsp.counts)) {
         ++*skipped;
         continue;
       }
@@ -348,8 +352,9 @@ class Parser {
         const int width = faces.i32(f, 96);
         const int height = faces.i32(f, 100);
         reserve_triangles(bsp, patch_triangle_count(width, height), who);
-        tessellate_patch(std::span<const Eigen::Vector3f>(positions_).subspan(
-                             static_cast<std::size_t>(first_vertex), static_cast<std::size_t>(vertex_count)),
+        tessellate_patch(std::span<const Eigen::Vector3f>(positions_)
+                             .subspan(static_cast<std::size_t>(first_vertex),
+                                      static_cast<std::size_t>(vertex_count)),
                          width, height, bsp.vertices, bsp.triangles);
         ++bsp.counts.patches;
       } else {

@@ -39,7 +39,13 @@ inline constexpr std::int32_t kSurfSky = 0x4;        // surfaceFlags: the sky po
 inline constexpr std::int32_t kSurfNodraw = 0x80;    // surfaceFlags: never drawn
 
 // Face types (the `type` field of a face record).
-enum class FaceType : std::int32_t { kBad = 0, kPolygon = 1, kPatch = 2, kMesh = 3, kBillboard = 4 };
+enum class FaceType : std::int32_t {
+  kBad = 0,
+  kPolygon = 1,
+  kPatch = 2,
+  kMesh = 3,
+  kBillboard = 4
+};
 
 struct Shader {
   std::string name;  // "textures/base_wall/concrete" ...
@@ -47,9 +53,7 @@ struct Shader {
   std::int32_t content_flags = 0;
   bool solid() const { return (content_flags & kContentsSolid) != 0; }
   // A face of this shader becomes triangles.
-  bool drawn_solid() const {
-    return solid() && (surface_flags & (kSurfSky | kSurfNodraw)) == 0;
-  }
+  bool drawn_solid() const { return solid() && (surface_flags & (kSurfSky | kSurfNodraw)) == 0; }
 };
 
 struct Plane {

@@ -28,7 +28,8 @@ class BruteForceSolid {
     std::int32_t node = 0;
     while (node >= 0) {
       const std::size_t at = lump_offset(b_, kNodesLump) + 36 * static_cast<std::size_t>(node);
-      const std::size_t plane = lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
       const double d = vec_at(b_, plane).dot(p) - le_f32(b_, plane + 12);
       node = le_i32(b_, at + (d >= 0 ? 4 : 8));
     }
@@ -36,7 +37,8 @@ class BruteForceSolid {
   }
   std::size_t brush_count() const { return lump_length(b_, kBrushesLump) / 12; }
   bool solid_brush(std::size_t i) const {
-    const auto shader = static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushesLump) + 12 * i + 8));
+    const auto shader =
+        static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushesLump) + 12 * i + 8));
     return (le_i32(b_, lump_offset(b_, kShadersLump) + 72 * shader + 68) & 1) != 0;
   }
   bool in_brush(std::size_t i, const Eigen::Vector3d& p) const {
@@ -45,7 +47,8 @@ class BruteForceSolid {
     const auto n = static_cast<std::size_t>(le_i32(b_, at + 4));
     bool inside = n > 0;
     for (std::size_t s = first; s < first + n && inside; ++s) {
-      const std::size_t plane = lump_offset(b_, kPlanesLump) +
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) +
           16 * static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushSidesLump) + 8 * s));
       inside = vec_at(b_, plane).dot(p) <= le_f32(b_, plane + 12);
     }
@@ -65,7 +68,8 @@ class BruteForceSolid {
     const auto first = static_cast<std::size_t>(le_i32(b_, at));
     const auto n = static_cast<std::size_t>(le_i32(b_, at + 4));
     for (std::size_t s = first; s < first + n; ++s) {
-      const std::size_t plane = lump_offset(b_, kPlanesLump) +
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) +
           16 * static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushSidesLump) + 8 * s));
       const Eigen::Vector3d normal = vec_at(b_, plane);
       const double dist = le_f32(b_, plane + 12);
@@ -97,11 +101,11 @@ LoadedMap load(const std::string& map, std::string* why) {
   return out;
 }
 
-#define LOAD_OR_SKIP(map, loaded)                                   \
-  SKIP_WITHOUT_OPENARENA();                                         \
-  std::string why;                                                  \
-  const LoadedMap loaded = load(map, &why);                         \
-  if (loaded.bytes.empty()) GTEST_SKIP() << why;                    \
+#define LOAD_OR_SKIP(map, loaded)                \
+  SKIP_WITHOUT_OPENARENA();                      \
+  std::string why;                               \
+  const LoadedMap loaded = load(map, &why);      \
+  if (loaded.bytes.empty()) GTEST_SKIP() << why; \
   ASSERT_NE(loaded.solid, nullptr)
 
 class Q3Solid : public ::testing::TestWithParam<const char*> {};
