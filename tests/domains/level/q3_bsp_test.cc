@@ -14,6 +14,14 @@ namespace {
 
 using namespace q3test;
 
+// The maps extracted for this run (q3_test_support.h's scratch_dir) go when the tests end.
+class RemoveScratchDir : public ::testing::Environment {
+ public:
+  void TearDown() override { std::filesystem::remove_all(scratch_dir()); }
+};
+[[maybe_unused]] ::testing::Environment* const kRemoveScratchDir =
+    ::testing::AddGlobalTestEnvironment(new RemoveScratchDir);
+
 // The scene frame of a Quake III map (FORMATS.md's defaults for .bsp and .pk3).
 const LevelTransform kQuakeFrame{0.03125, UpAxis::kZ};
 
