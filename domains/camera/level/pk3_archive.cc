@@ -44,9 +44,14 @@ Pk3Archive::Pk3Archive(std::string path) : path_(std::move(path)) {
   if (archive_ == nullptr) {
     std::string why;
     switch (code) {
-      case ZIP_ER_NOENT: why = "no such file"; break;
-      case ZIP_ER_NOZIP: why = "not a zip archive (a .pk3 is one)"; break;
-      default: why = zip_message(code);
+      case ZIP_ER_NOENT:
+        why = "no such file";
+        break;
+      case ZIP_ER_NOZIP:
+        why = "not a zip archive (a .pk3 is one)";
+        break;
+      default:
+        why = zip_message(code);
     }
     throw csp::InputError(csp::SourceLocation{path_, 0, 0}, "cannot open the .pk3: " + why);
   }
@@ -88,8 +93,8 @@ std::string Pk3Archive::select_map(const std::string& map) const {
   for (const auto& entry : entries) {
     if (lower(entry) == wanted) return entry;
   }
-  throw csp::InputError(where, "no map \"" + map + "\" in the .pk3; it holds: " +
-                                   list_maps(entries));
+  throw csp::InputError(where,
+                        "no map \"" + map + "\" in the .pk3; it holds: " + list_maps(entries));
 }
 
 std::vector<unsigned char> Pk3Archive::read(const std::string& entry) const {
@@ -113,8 +118,8 @@ std::vector<unsigned char> Pk3Archive::read(const std::string& entry) const {
   while (done < bytes.size()) {
     const zip_int64_t got = zip_fread(file.get(), bytes.data() + done, bytes.size() - done);
     if (got < 0) {
-      throw csp::InputError(where, entry + ": corrupt entry: " +
-                                       zip_error_strerror(zip_file_get_error(file.get())));
+      throw csp::InputError(
+          where, entry + ": corrupt entry: " + zip_error_strerror(zip_file_get_error(file.get())));
     }
     if (got == 0) break;
     done += static_cast<std::size_t>(got);
@@ -127,8 +132,8 @@ std::vector<unsigned char> Pk3Archive::read(const std::string& entry) const {
   // libzip checks the CRC once the whole entry is read; a last read at the end reports it.
   unsigned char probe = 0;
   if (zip_fread(file.get(), &probe, 1) < 0) {
-    throw csp::InputError(where, entry + ": corrupt entry: " +
-                                     zip_error_strerror(zip_file_get_error(file.get())));
+    throw csp::InputError(
+        where, entry + ": corrupt entry: " + zip_error_strerror(zip_file_get_error(file.get())));
   }
   return bytes;
 }

@@ -13,7 +13,10 @@
 // What becomes triangles: the faces of type polygon (1), mesh (3) and bezier patch (2,
 // tessellated by q3_patch.h) whose shader is solid (CONTENTS_SOLID in its contentFlags) and
 // is neither sky (SURF_SKY) nor nodraw (SURF_NODRAW). Billboards (4) and bad faces (0) are
-// drawn sprites with no matter: skipped. The faces lump also holds the faces of the brush
+// drawn sprites with no matter: skipped. Maps compiled with q3map2 -patchmeta (most of
+// OpenArena's) hold each patch twice: drawn as polygons, and as a patch whose shader record
+// has SURF_NODRAW (collision only); the nodraw rule keeps the polygons and drops the copy.
+// The faces lump also holds the faces of the brush
 // models (doors, platforms, moving walls): they are kept, as solid geometry at rest. Zero-area
 // triangles (pinched patches) are kept too: they block nothing and cost little.
 //
@@ -36,7 +39,13 @@ inline constexpr std::int32_t kSurfSky = 0x4;        // surfaceFlags: the sky po
 inline constexpr std::int32_t kSurfNodraw = 0x80;    // surfaceFlags: never drawn
 
 // Face types (the `type` field of a face record).
-enum class FaceType : std::int32_t { kBad = 0, kPolygon = 1, kPatch = 2, kMesh = 3, kBillboard = 4 };
+enum class FaceType : std::int32_t {
+  kBad = 0,
+  kPolygon = 1,
+  kPatch = 2,
+  kMesh = 3,
+  kBillboard = 4
+};
 
 struct Shader {
   std::string name;  // "textures/base_wall/concrete" ...
@@ -44,9 +53,7 @@ struct Shader {
   std::int32_t content_flags = 0;
   bool solid() const { return (content_flags & kContentsSolid) != 0; }
   // A face of this shader becomes triangles.
-  bool drawn_solid() const {
-    return solid() && (surface_flags & (kSurfSky | kSurfNodraw)) == 0;
-  }
+  bool drawn_solid() const { return solid() && (surface_flags & (kSurfSky | kSurfNodraw)) == 0; }
 };
 
 struct Plane {
@@ -79,6 +86,14 @@ struct BrushSide {
   std::int32_t shader = 0;
 };
 
+// A model: model 0 is the world (its brushes are in the tree's leaves); the others are the
+// brush entities (doors, platforms, triggers), whose brushes no leaf lists.
+struct Model {
+  Eigen::Vector3f mins, maxs;  // bounds, file units
+  std::int32_t first_face = 0, face_count = 0;
+  std::int32_t first_brush = 0, brush_count = 0;
+};
+
 // What the solid test needs (q3_solid.h); every index in range, checked by parse_bsp.
 struct BspTree {
   std::vector<Shader> shaders;
@@ -88,6 +103,7 @@ struct BspTree {
   std::vector<std::int32_t> leafbrushes;  // brush indices
   std::vector<Brush> brushes;
   std::vector<BrushSide> brushsides;
+  std::vector<Model> models;  // may be empty (a map always has the world, but it is unused)
 };
 
 // Which faces were kept and which were not, for people and for tests.

@@ -22,7 +22,9 @@ bool has_pk3_extension(const std::string& file) {
 
 std::vector<unsigned char> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw csp::InputError(csp::SourceLocation{path, 0, 0}, "cannot open the map: no such file or not readable");
+  if (!in)
+    throw csp::InputError(csp::SourceLocation{path, 0, 0},
+                          "cannot open the map: no such file or not readable");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                    std::istreambuf_iterator<char>());
   if (in.bad()) throw csp::InputError(csp::SourceLocation{path, 0, 0}, "cannot read the map");

@@ -35,8 +35,7 @@ std::array<double, 3> bernstein(double t) {
 void tessellate_patch(std::span<const Eigen::Vector3f> control, int width, int height,
                       std::vector<Eigen::Vector3f>& vertices,
                       std::vector<std::array<std::uint32_t, 3>>& triangles) {
-  assert(patch_size_problem(width, height, static_cast<std::int64_t>(control.size())) ==
-         nullptr);
+  assert(patch_size_problem(width, height, static_cast<std::int64_t>(control.size())) == nullptr);
   const int sub_u = (width - 1) / 2;
   const int sub_v = (height - 1) / 2;
   const int columns = sub_u * kPatchLevel + 1;  // grid samples along u
@@ -64,8 +63,8 @@ void tessellate_patch(std::span<const Eigen::Vector3f> control, int width, int h
   for (int row = 0; row + 1 < rows; ++row) {
     for (int column = 0; column + 1 < columns; ++column) {
       const std::uint32_t v00 = base + static_cast<std::uint32_t>(row * columns + column);
-      const std::uint32_t v10 = v00 + 1;                                       // +u
-      const std::uint32_t v01 = v00 + static_cast<std::uint32_t>(columns);     // +v
+      const std::uint32_t v10 = v00 + 1;                                    // +u
+      const std::uint32_t v01 = v00 + static_cast<std::uint32_t>(columns);  // +v
       const std::uint32_t v11 = v01 + 1;
       triangles.push_back({v00, v10, v01});
       triangles.push_back({v10, v11, v01});

@@ -28,23 +28,41 @@ bool Q3SolidVolume::solid_at_file(const Eigen::Vector3d& p) const {
   const q3::Leaf& leaf = tree_.leaves[static_cast<std::size_t>(-(index + 1))];
   if (leaf.cluster < 0) return true;  // outside the world, or inside opaque matter
   for (std::int32_t k = 0; k < leaf.leafbrush_count; ++k) {
-    const auto b = static_cast<std::size_t>(
-        tree_.leafbrushes[static_cast<std::size_t>(leaf.first_leafbrush + k)]);
-    if (!brush_solid_[b]) continue;
-    const q3::Brush& brush = tree_.brushes[b];
-    bool inside = brush.side_count > 0;
-    for (std::int32_t s = 0; s < brush.side_count && inside; ++s) {
-      const q3::BrushSide& side = tree_.brushsides[static_cast<std::size_t>(brush.first_side + s)];
-      const q3::Plane& plane = tree_.planes[static_cast<std::size_t>(side.plane)];
-      inside = plane.normal.cast<double>().dot(p) <= plane.dist;
+    if (in_solid_brush(tree_.leafbrushes[static_cast<std::size_t>(leaf.first_leafbrush + k)], p)) {
+      return true;
     }
-    if (inside) return true;
+  }
+  // The brush entities, where they stand in the map (model 0 is the world, done above).
+  for (std::size_t m = 1; m < tree_.models.size(); ++m) {
+    const q3::Model& model = tree_.models[m];
+    if ((p.array() < model.mins.cast<double>().array()).any() ||
+        (p.array() > model.maxs.cast<double>().array()).any()) {
+      continue;
+    }
+    for (std::int32_t k = 0; k < model.brush_count; ++k) {
+      if (in_solid_brush(model.first_brush + k, p)) return true;
+    }
   }
   return false;
 }
 
+// On or behind every side plane (the normals point out of the brush).
+bool Q3SolidVolume::in_solid_brush(std::int32_t index, const Eigen::Vector3d& p) const {
+  const auto b = static_cast<std::size_t>(index);
+  if (!brush_solid_[b]) return false;
+  const q3::Brush& brush = tree_.brushes[b];
+  if (brush.side_count == 0) return false;
+  for (std::int32_t s = 0; s < brush.side_count; ++s) {
+    const q3::BrushSide& side = tree_.brushsides[static_cast<std::size_t>(brush.first_side + s)];
+    const q3::Plane& plane = tree_.planes[static_cast<std::size_t>(side.plane)];
+    if (plane.normal.cast<double>().dot(p) > plane.dist) return false;
+  }
+  return true;
+}
+
 std::string Q3SolidVolume::describe() const {
-  return "Quake III brushes (" + std::to_string(solid_brushes_) + " solid brushes)";
+  return "Quake III brushes (" + std::to_string(solid_brushes_) + " solid brushes, " +
+         std::to_string(tree_.models.empty() ? 0 : tree_.models.size() - 1) + " brush models)";
 }
 
 }  // namespace sightline::camera

@@ -5,7 +5,10 @@
 // to one leaf; it is solid when that leaf is outside the world or opaque (cluster < 0), or
 // when it lies inside one of the leaf's brushes whose contents include CONTENTS_SOLID
 // (on or behind every side plane: normal . p <= dist). This is how the game's own point
-// contents test works (CM_PointContents), with the contents limited to "solid".
+// contents test works (CM_PointContents), with the contents limited to "solid". The brush
+// entities (doors, platforms: models 1..n, which no leaf lists) are solid too, where they
+// stand in the map, as their faces are in the level's mesh: a point inside one of their
+// solid brushes (within the model's bounds first) is solid.
 //
 // solid_at() walks arrays only: no allocation, no mutable state, safe from any thread.
 #pragma once
@@ -30,6 +33,8 @@ class Q3SolidVolume final : public SolidVolume {
   bool solid_at_file(const Eigen::Vector3d& file_point) const;
 
  private:
+  bool in_solid_brush(std::int32_t brush, const Eigen::Vector3d& p) const;
+
   q3::BspTree tree_;
   LevelTransform transform_;
   std::vector<char> brush_solid_;  // per brush: its shader's contents include solid

@@ -181,7 +181,8 @@ TEST_F(Q3CorruptMap, ALumpOutsideTheFileIsRefused) {
 }
 
 TEST_F(Q3CorruptMap, ALumpLengthThatIsNotWholeRecordsIsRefused) {
-  expect_refused(8 + 8 * kFacesLump + 4, static_cast<std::int32_t>(lump_length(good_, kFacesLump) - 1),
+  expect_refused(8 + 8 * kFacesLump + 4,
+                 static_cast<std::int32_t>(lump_length(good_, kFacesLump) - 1),
                  "not a multiple of its 104-byte records");
   expect_refused(8 + 8 * kVertexesLump + 4,
                  static_cast<std::int32_t>(lump_length(good_, kVertexesLump) - 4), "44-byte");

@@ -28,29 +28,57 @@ class BruteForceSolid {
     std::int32_t node = 0;
     while (node >= 0) {
       const std::size_t at = lump_offset(b_, kNodesLump) + 36 * static_cast<std::size_t>(node);
-      const std::size_t plane = lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
       const double d = vec_at(b_, plane).dot(p) - le_f32(b_, plane + 12);
       node = le_i32(b_, at + (d >= 0 ? 4 : 8));
     }
     return le_i32(b_, lump_offset(b_, kLeavesLump) + 48 * static_cast<std::size_t>(-(node + 1)));
   }
+  std::size_t brush_count() const { return lump_length(b_, kBrushesLump) / 12; }
+  bool solid_brush(std::size_t i) const {
+    const auto shader =
+        static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushesLump) + 12 * i + 8));
+    return (le_i32(b_, lump_offset(b_, kShadersLump) + 72 * shader + 68) & 1) != 0;
+  }
+  bool in_brush(std::size_t i, const Eigen::Vector3d& p) const {
+    const std::size_t at = lump_offset(b_, kBrushesLump) + 12 * i;
+    const auto first = static_cast<std::size_t>(le_i32(b_, at));
+    const auto n = static_cast<std::size_t>(le_i32(b_, at + 4));
+    bool inside = n > 0;
+    for (std::size_t s = first; s < first + n && inside; ++s) {
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) +
+          16 * static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushSidesLump) + 8 * s));
+      inside = vec_at(b_, plane).dot(p) <= le_f32(b_, plane + 12);
+    }
+    return inside;
+  }
+  // Every brush of the map: the world's and the brush entities' (doors, platforms).
   bool in_a_solid_brush(const Eigen::Vector3d& p) const {
-    const std::size_t brushes = lump_length(b_, kBrushesLump) / 12;
-    for (std::size_t i = 0; i < brushes; ++i) {
-      const std::size_t at = lump_offset(b_, kBrushesLump) + 12 * i;
-      const auto shader = static_cast<std::size_t>(le_i32(b_, at + 8));
-      if ((le_i32(b_, lump_offset(b_, kShadersLump) + 72 * shader + 68) & 1) == 0) continue;
-      const auto first = static_cast<std::size_t>(le_i32(b_, at));
-      const auto n = static_cast<std::size_t>(le_i32(b_, at + 4));
-      bool inside = n > 0;
-      for (std::size_t s = first; s < first + n && inside; ++s) {
-        const std::size_t plane = lump_offset(b_, kPlanesLump) +
-            16 * static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushSidesLump) + 8 * s));
-        inside = vec_at(b_, plane).dot(p) <= le_f32(b_, plane + 12);
-      }
-      if (inside) return true;
+    for (std::size_t i = 0; i < brush_count(); ++i) {
+      if (solid_brush(i) && in_brush(i, p)) return true;
     }
     return false;
+  }
+  // The box of brush i's axial sides (q3map2 gives every brush its six axial bevels).
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> axial_box(std::size_t i) const {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(-1e30), hi = -lo;
+    const std::size_t at = lump_offset(b_, kBrushesLump) + 12 * i;
+    const auto first = static_cast<std::size_t>(le_i32(b_, at));
+    const auto n = static_cast<std::size_t>(le_i32(b_, at + 4));
+    for (std::size_t s = first; s < first + n; ++s) {
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) +
+          16 * static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kBrushSidesLump) + 8 * s));
+      const Eigen::Vector3d normal = vec_at(b_, plane);
+      const double dist = le_f32(b_, plane + 12);
+      for (int k = 0; k < 3; ++k) {
+        if (normal[k] == 1) hi[k] = std::min(hi[k], dist);
+        if (normal[k] == -1) lo[k] = std::max(lo[k], -dist);
+      }
+    }
+    return {lo, hi};
   }
 
  private:
@@ -73,11 +101,11 @@ LoadedMap load(const std::string& map, std::string* why) {
   return out;
 }
 
-#define LOAD_OR_SKIP(map, loaded)                                   \
-  SKIP_WITHOUT_OPENARENA();                                         \
-  std::string why;                                                  \
-  const LoadedMap loaded = load(map, &why);                         \
-  if (loaded.bytes.empty()) GTEST_SKIP() << why;                    \
+#define LOAD_OR_SKIP(map, loaded)                \
+  SKIP_WITHOUT_OPENARENA();                      \
+  std::string why;                               \
+  const LoadedMap loaded = load(map, &why);      \
+  if (loaded.bytes.empty()) GTEST_SKIP() << why; \
   ASSERT_NE(loaded.solid, nullptr)
 
 class Q3Solid : public ::testing::TestWithParam<const char*> {};
@@ -136,6 +164,30 @@ TEST_P(Q3Solid, AgreesWithABruteForceOverEveryBrushOfTheMap) {
   EXPECT_GT(in_leaf_brush, 0);
 }
 
+// Doors and platforms are brush models: no leaf lists their brushes, yet their faces are in
+// the mesh, so inside them is solid too.
+TEST_P(Q3Solid, TheInsideOfADoorOrPlatformIsSolid) {
+  LOAD_OR_SKIP(GetParam(), m);
+  const BruteForceSolid brute(m.bytes);
+  const std::size_t models = lump_length(m.bytes, 7) / 40;
+  int checked = 0;
+  for (std::size_t model = 1; model < models; ++model) {
+    const std::size_t at = lump_offset(m.bytes, 7) + 40 * model;
+    const auto first = static_cast<std::size_t>(le_i32(m.bytes, at + 32));
+    const auto n = static_cast<std::size_t>(le_i32(m.bytes, at + 36));
+    for (std::size_t b = first; b < first + n; ++b) {
+      if (!brute.solid_brush(b)) continue;
+      const auto [lo, hi] = brute.axial_box(b);
+      const Eigen::Vector3d centre = (lo + hi) / 2;
+      if (!brute.in_brush(b, centre)) continue;  // a wedge whose box centre is outside it
+      EXPECT_TRUE(m.solid->solid_at_file(centre)) << "model " << model << " brush " << b;
+      EXPECT_TRUE(m.level.solid->solid_at(kQuakeFrame.to_scene(centre)));
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 3);
+}
+
 TEST_P(Q3Solid, AnswersTheSameFromSeveralThreads) {
   LOAD_OR_SKIP(GetParam(), m);
   std::vector<Eigen::Vector3d> points;
@@ -163,9 +215,10 @@ TEST_P(Q3Solid, DescribesItsSolidBrushes) {
   LOAD_OR_SKIP(GetParam(), m);
   EXPECT_NE(m.solid->describe().find("solid brushes"), std::string::npos);
   EXPECT_NE(m.solid->describe().find("Quake III"), std::string::npos);
+  EXPECT_NE(m.solid->describe().find("brush models"), std::string::npos);
 }
 
-INSTANTIATE_TEST_SUITE_P(OpenArena, Q3Solid, ::testing::Values("aggressor", "oa_thor"));
+INSTANTIATE_TEST_SUITE_P(OpenArena, Q3Solid, ::testing::Values("aggressor", "pxlfan", "oa_thor"));
 
 }  // namespace
 }  // namespace sightline::camera

@@ -5,14 +5,15 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
 #include <bit>
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -21,18 +22,16 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace sightline::camera::q3test {
 
 inline const std::string kPak088 = "/usr/share/games/openarena/baseoa/pak6-patch088.pk3";
 
 // Skips the test when the OpenArena data is not installed.
-#define SKIP_WITHOUT_OPENARENA()                                                         \
-  do {                                                                                   \
-    if (!std::filesystem::exists(::sightline::camera::q3test::kPak088))                  \
-      GTEST_SKIP() << "no " << ::sightline::camera::q3test::kPak088                      \
-                   << " (Debian's openarena-088-data)";                                  \
+#define SKIP_WITHOUT_OPENARENA()                                        \
+  do {                                                                  \
+    if (!std::filesystem::exists(::sightline::camera::q3test::kPak088)) \
+      GTEST_SKIP() << "no " << ::sightline::camera::q3test::kPak088     \
+                   << " (Debian's openarena-088-data)";                 \
   } while (0)
 
 inline bool have_program(const char* name) {
@@ -50,8 +49,8 @@ inline void write_bytes(const std::filesystem::path& path, const std::vector<uns
 }
 
 inline std::filesystem::path scratch_dir() {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("sightline_q3_test_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("sightline_q3_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }
@@ -105,9 +104,18 @@ inline Eigen::Vector3d vec_at(const std::vector<unsigned char>& b, std::size_t a
 }
 
 // Lump numbers and record sizes used below (Quake III's BSP format description).
-enum : int { kShadersLump = 1, kPlanesLump = 2, kNodesLump = 3, kLeavesLump = 4,
-             kLeafBrushesLump = 6, kBrushesLump = 8, kBrushSidesLump = 9, kVertexesLump = 10,
-             kMeshVertsLump = 11, kFacesLump = 13 };
+enum : int {
+  kShadersLump = 1,
+  kPlanesLump = 2,
+  kNodesLump = 3,
+  kLeavesLump = 4,
+  kLeafBrushesLump = 6,
+  kBrushesLump = 8,
+  kBrushSidesLump = 9,
+  kVertexesLump = 10,
+  kMeshVertsLump = 11,
+  kFacesLump = 13
+};
 constexpr std::size_t kShaderBytes = 72, kVertexBytes = 44, kFaceBytes = 104;
 
 // The entity lump's text, the entities as key -> value maps (no escapes in Quake III).
