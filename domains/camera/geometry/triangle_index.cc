@@ -65,7 +65,7 @@ RTCDevice device() {
   return the_device;
 }
 
-bool finite(const Eigen::Vector3d& p) { return p.allFinite(); }
+bool all_finite(const Eigen::Vector3d& p) { return p.allFinite(); }
 
 // The tolerance, in metres, within which a query counts as touching a triangle: 2^-19 of
 // the largest coordinate involved (about 16 float ulps: 1.9e-5 m at 10 m, 1.9e-4 m at
@@ -296,7 +296,7 @@ TriangleIndex::TriangleIndex(const TriangleMesh& mesh) {
 // segment is extended by the tolerance at both ends. A segment shorter than the tolerance
 // is a point: it touches a triangle when the point lies within the tolerance of one.
 bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-  if (!impl_ || !finite(a) || !finite(b)) return false;
+  if (!impl_ || !all_finite(a) || !all_finite(b)) return false;
   const Eigen::Vector3d d = b - a;
   const double length = d.norm();
   const double tol = tolerance(impl_->scale, a, b);
@@ -325,7 +325,7 @@ bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vecto
 
 std::optional<TriangleIndex::Hit> TriangleIndex::first_hit(const Eigen::Vector3d& a,
                                                            const Eigen::Vector3d& b) const {
-  if (!impl_ || !finite(a) || !finite(b)) return std::nullopt;
+  if (!impl_ || !all_finite(a) || !all_finite(b)) return std::nullopt;
   const Eigen::Vector3d d = b - a;
   const double length = d.norm();
   const double tol = tolerance(impl_->scale, a, b);
@@ -374,7 +374,7 @@ std::optional<TriangleIndex::Hit> TriangleIndex::first_hit(const Eigen::Vector3d
 
 std::optional<TriangleIndex::Nearest> TriangleIndex::nearest(const Eigen::Vector3d& p,
                                                              double limit) const {
-  if (!impl_ || !finite(p) || !(limit > 0)) return std::nullopt;
+  if (!impl_ || !all_finite(p) || !(limit > 0)) return std::nullopt;
   NearestSearch search;
   search.mesh = impl_->mesh;
   search.p = p;
