@@ -17,6 +17,7 @@
 #include "apps/commands.h"
 #include "domains/camera/level/level.h"
 #include "experiments/level_walk.h"
+#include "experiments/spawn_points.h"
 
 namespace sightline::apps {
 namespace {
@@ -58,13 +59,19 @@ void walk_level(const LevelWalkArgs& args) {
                              (error ? ": " + error.message() : ""));
   }
 
-  const experiments::LevelWalks result = experiments::generate_walks(level.mesh, args.options);
+  const std::vector<Eigen::Vector3d> spawns = experiments::quake3_spawn_points(spec, level.transform);
+  const experiments::LevelWalks result =
+      experiments::generate_walks(level.mesh, args.options, spawns);
   const experiments::NavigationMeshStats& nav = result.navigation;
   std::cout << "Navigation mesh: " << nav.polygons << " polygons, " << nav.region_polygons
             << " in the largest connected region (" << fixed(nav.region_area, 1) << " of "
             << fixed(nav.walkable_area, 1) << " m^2 walkable), " << nav.grid_width << " x "
             << nav.grid_depth << " cells of " << nav.cell_size << " x " << nav.cell_height
             << " m, built in " << fixed(nav.build_seconds, 2) << " s\n";
+  if (nav.anchors > 0) {
+    std::cout << "  the region walked holds " << nav.region_anchors << " of the map's " << nav.anchors
+              << " spawn points\n";
+  }
   if (!nav.note.empty()) std::cout << "  note: " << nav.note << "\n";
 
   // The level as the scene files name it: as given when absolute (installed maps), else

@@ -335,11 +335,12 @@ std::string WalkOptions::validate() const {
   return "";
 }
 
-LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options) {
+LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                          const std::vector<Eigen::Vector3d>& anchors) {
   if (const std::string bad = options.validate(); !bad.empty()) throw std::invalid_argument(bad);
   const auto start = std::chrono::steady_clock::now();
   LevelWalks out;
-  const NavigationMesh nav(mesh, options);
+  const NavigationMesh nav(mesh, options, anchors);
   out.navigation = nav.stats();
   const FloorProbe probe(mesh, options.agent_height);
   const WalkMaker maker(nav, probe, options);

@@ -4,7 +4,9 @@
 // Recast for a person (WalkOptions: radius, height, step, slope ...), keeps its largest
 // connected region, picks far-apart goals on it, plans between them with Detour, and turns
 // each path into keyframes: walking speeds of 1.5-4 m/s, turning at corners, now and then a
-// stop and a turn on the spot, 40-120 s per walk, every keyframe on the floor. The same
+// stop and a turn on the spot, 40-120 s per walk, every keyframe on the floor. On a game
+// map, the region walked is the one holding the spawn points (a map may have a bigger
+// floor nobody plays on). The same
 // seed gives the same walks. Scene files are written by walk_scene_yaml().
 #pragma once
 
@@ -56,9 +58,10 @@ struct NavigationMeshStats {
   double cell_size = 0;                // metres across (raised from the options on a big level)
   double cell_height = 0;              // metres up
   int polygons = 0;                    // all walkable polygons
-  int region_polygons = 0;             // polygons of the largest connected region
+  int region_polygons = 0;             // polygons of the connected region walked
+  int anchors = 0, region_anchors = 0; // anchors given, and on the region walked
   double walkable_area = 0;            // m^2, all polygons (seen from above)
-  double region_area = 0;              // m^2, the largest connected region
+  double region_area = 0;              // m^2, the connected region walked
   double build_seconds = 0;            // Recast and Detour, wall clock
   std::string note;                    // what was adjusted and why (empty if nothing)
 };
@@ -74,10 +77,13 @@ class WalkError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// `options.walks` walks on `mesh` (metres, y up). Throws WalkError when the level has no
-// walkable region big enough for a walk (the message says what was found).
-// Throws std::invalid_argument when options.validate() fails.
-LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options);
+// `options.walks` walks on `mesh` (metres, y up), on the connected walkable region holding
+// most of `anchors` (where people are known to stand, e.g. quake3_spawn_points()), or the
+// largest one when there are none. Throws WalkError when the level has no walkable region
+// big enough for a walk (the message says what was found), std::invalid_argument when
+// options.validate() fails.
+LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                          const std::vector<Eigen::Vector3d>& anchors = {});
 
 // A scene file (FORMATS.md) for one walk: `name`, a description, the `level:` block naming
 // `level_file` (as it should appear in the file), `map` (omitted when empty), `scale` and

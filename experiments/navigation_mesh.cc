@@ -64,7 +64,8 @@ struct NavigationMesh::Impl {
   }
 };
 
-NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options)
+NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                               const std::vector<Eigen::Vector3d>& anchors)
     : impl_(std::make_unique<Impl>()) {
   const auto start = std::chrono::steady_clock::now();
   if (mesh.empty()) throw WalkError("no walkable region: the level has no triangles");
@@ -252,8 +253,29 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
       }
     }
   }
-  const auto largest = static_cast<int>(
-      std::max_element(component_area.begin(), component_area.end()) - component_area.begin());
+  // The region walked: most anchors on it, then the largest.
+  std::vector<int> anchored(component_area.size(), 0);
+  dtQueryFilter any;
+  any.setIncludeFlags(0xffff);
+  const float reach[3] = {1.0f, 2.5f, 1.0f};  // a spawn point is a player's centre, ~0.75 m up
+  for (const Eigen::Vector3d& a : anchors) {
+    const float p[3] = {static_cast<float>(a.x()), static_cast<float>(a.y()), static_cast<float>(a.z())};
+    dtPolyRef ref = 0;
+    float nearest[3];
+    if (dtStatusSucceed(impl_->query->findNearestPoly(p, reach, &any, &ref, nearest)) && ref != 0) {
+      ++anchored[static_cast<std::size_t>(component[nav.decodePolyIdPoly(ref)])];
+    }
+  }
+  int largest = 0;
+  for (int c = 1; c < static_cast<int>(component_area.size()); ++c) {
+    const auto k = static_cast<std::size_t>(c), best = static_cast<std::size_t>(largest);
+    if (anchored[k] > anchored[best] ||
+        (anchored[k] == anchored[best] && component_area[k] > component_area[best])) {
+      largest = c;
+    }
+  }
+  stats_.anchors = static_cast<int>(anchors.size());
+  stats_.region_anchors = anchored[static_cast<std::size_t>(largest)];
   const dtPolyRef base = nav.getPolyRefBase(tile);
   double total = 0;
   for (int i = 0; i < npolys; ++i) {
@@ -271,7 +293,7 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   stats_.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (total < kMinRegionArea) {
-    throw no_region("the largest connected floor is only " + metres(total) + " m^2, a walk needs " +
+    throw no_region("the connected floor walked is only " + metres(total) + " m^2, a walk needs " +
                     metres(kMinRegionArea));
   }
 }

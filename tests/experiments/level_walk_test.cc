@@ -16,6 +16,7 @@
 #include <string>
 
 #include "domains/camera/level/level.h"
+#include "experiments/spawn_points.h"
 
 namespace sightline::experiments {
 namespace {
@@ -361,18 +362,33 @@ TEST_P(GenerateWalksOnQuake3Map, KeyframesStandOnFloorsWithHeadroomAndLegsClearK
   const camera::Level level = camera::load_level(spec);
   WalkOptions options = three_walks(1);
   options.walks = 2;
-  const LevelWalks result = generate_walks(level.mesh, options);
+  const std::vector<Vector3d> spawns = quake3_spawn_points(spec, level.transform);
+  ASSERT_FALSE(spawns.empty());
+  const LevelWalks result = generate_walks(level.mesh, options, spawns);
   EXPECT_GT(result.navigation.region_area, 100.0);
+  EXPECT_GT(result.navigation.region_anchors, 0);
+  // The arena: within the spawn points' heights, give or take a few storeys (the floors
+  // nobody plays on lie 30 and 100 m below).
+  double low = spawns[0].y(), high = low;
+  for (const Vector3d& s : spawns) low = std::min(low, s.y()), high = std::max(high, s.y());
   for (const LevelWalk& walk : result.walks) {
     expect_walkable(level.mesh, walk);
     expect_person_like(walk, options);
+    for (const auto& k : walk.keyframes) {
+      EXPECT_GT(k.position.y(), low - 15);
+      EXPECT_LT(k.position.y(), high + 15);
+    }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(OpenArena, GenerateWalksOnQuake3Map,
                          ::testing::Values(InstalledMap{"pak6-patch088.pk3", "oa_thor"},
                                            InstalledMap{"pak6-patch088.pk3", "aggressor"},
-                                           InstalledMap{"pak6-patch088.pk3", "am_lavaarena"}),
+                                           InstalledMap{"pak6-patch088.pk3", "am_lavaarena"},
+                                           // Both have a floor far below the arena,
+                                           // larger than it.
+                                           InstalledMap{"pak6-patch088.pk3", "oa_koth2"},
+                                           InstalledMap{"pak6-patch088.pk3", "czest2ctf"}),
                          [](const auto& info) { return std::string(info.param.map); });
 
 }  // namespace
