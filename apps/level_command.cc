@@ -64,7 +64,7 @@ void walk_level(const LevelWalkArgs& args) {
       experiments::generate_walks(level.mesh, args.options, spawns);
   const experiments::NavigationMeshStats& nav = result.navigation;
   std::cout << "Navigation mesh: " << nav.polygons << " polygons, " << nav.region_polygons
-            << " in the largest connected region (" << fixed(nav.region_area, 1) << " of "
+            << " in the connected region walked (" << fixed(nav.region_area, 1) << " of "
             << fixed(nav.walkable_area, 1) << " m^2 walkable), " << nav.grid_width << " x "
             << nav.grid_depth << " cells of " << nav.cell_size << " x " << nav.cell_height
             << " m, built in " << fixed(nav.build_seconds, 2) << " s\n";
