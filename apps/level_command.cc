@@ -38,8 +38,21 @@ std::string fixed(double v, int decimals) {
 }
 
 void walk_level(const LevelWalkArgs& args) {
-  if (const std::string bad = args.options.validate(); !bad.empty()) {
-    throw std::invalid_argument("bad walk option: " + bad);
+  if (std::string bad = args.options.validate(); !bad.empty()) {
+    // The field's name as the option is spelled.
+    static const std::pair<const char*, const char*> kOptions[] = {
+        {"agent_radius", "--agent-radius"}, {"agent_height", "--agent-height"},
+        {"agent_step", "--agent-step"},     {"max_slope_degrees", "--max-slope"},
+        {"cell_size", "--cell-size"},       {"cell_height", "--cell-height"},
+        {"min_speed", "--min-speed"},       {"max_speed", "--max-speed"},
+        {"min_seconds", "--min-seconds"},   {"max_seconds", "--max-seconds"},
+        {"stop_probability", "--stop-probability"}, {"turn_rate_degrees", "--turn-rate"},
+        {"walks", "--walks"}};
+    for (const auto& [field, option] : kOptions) {
+      const std::string prefix = std::string(field) + ":";
+      if (bad.rfind(prefix, 0) == 0) bad = option + bad.substr(std::string(field).size());
+    }
+    throw std::invalid_argument(bad);
   }
   camera::LevelSpec spec;
   spec.file = args.file;

@@ -74,15 +74,16 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
 
   double cs = options.cell_size, ch = options.cell_height;
   std::string note;
-  const double cells = std::ceil(extent.x() / cs + 1) * std::ceil(extent.z() / cs + 1);
+  const double cells = std::ceil(extent.x() / cs + 8) * std::ceil(extent.z() / cs + 8);
   if (cells > kMaxCells) {
-    cs = std::sqrt((extent.x() + cs) * (extent.z() + cs) / kMaxCells) * 1.01;
+    cs = std::sqrt((extent.x() + 8 * cs) * (extent.z() + 8 * cs) / kMaxCells) * 1.01;
     note = "cell size raised from " + metres(options.cell_size) + " to " + metres(cs) +
            " m: the level is " + metres(extent.x()) + " x " + metres(extent.z()) +
            " m, more than one Recast tile of " + metres(kMaxCells) + " cells";
   }
-  if (extent.y() / ch > RC_SPAN_MAX_HEIGHT - 64) {
-    ch = extent.y() / (RC_SPAN_MAX_HEIGHT - 64) * 1.01;
+  const double rise = extent.y() + options.agent_height + 2 * ch;
+  if (rise / ch > RC_SPAN_MAX_HEIGHT - 64) {
+    ch = rise / (RC_SPAN_MAX_HEIGHT - 64) * 1.01;
     note += std::string(note.empty() ? "" : "; ") + "cell height raised from " +
             metres(options.cell_height) + " to " + metres(ch) + " m: the level is " +
             metres(extent.y()) + " m high";
@@ -103,9 +104,12 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   cfg.maxVertsPerPoly = 6;
   cfg.detailSampleDist = static_cast<float>(6 * cs);
   cfg.detailSampleMaxError = static_cast<float>(ch);
+  // A margin all round: a level flat along an axis (one wall) still has cells, and the
+  // floor's border cells are never clipped by the bounds.
+  const double margin[3] = {options.agent_radius + 2 * cs, ch, options.agent_radius + 2 * cs};
   for (int i = 0; i < 3; ++i) {
-    cfg.bmin[i] = static_cast<float>(bounds.min[i]);
-    cfg.bmax[i] = static_cast<float>(bounds.max[i]);
+    cfg.bmin[i] = static_cast<float>(bounds.min[i] - margin[i]);
+    cfg.bmax[i] = static_cast<float>(bounds.max[i] + margin[i]);
   }
   // Headroom above the highest floor, so its walkable spans exist.
   cfg.bmax[1] += static_cast<float>(options.agent_height);

@@ -290,8 +290,10 @@ TEST(GenerateWalks, ALevelWithoutWalkableFloorIsReported) {
   add_quad(walls, {2, 0, 0}, {2, 3, 0}, {2, 3, 10}, {2, 0, 10}, Vector3d::UnitX());
   TriangleMesh speck;
   add_floor(speck, 0, 0, 1, 1, 0);
+  TriangleMesh plane;  // one wall, flat along x: no extent across it
+  add_quad(plane, {0, 0, 0}, {0, 3, 0}, {0, 3, 10}, {0, 0, 10}, Vector3d::UnitX());
   TriangleMesh nothing;
-  for (const TriangleMesh* mesh : {&walls, &speck, &nothing}) {
+  for (const TriangleMesh* mesh : {&walls, &speck, &plane, &nothing}) {
     try {
       generate_walks(*mesh, WalkOptions());
       ADD_FAILURE() << "expected WalkError";
