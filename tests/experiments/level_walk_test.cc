@@ -6,6 +6,7 @@
 #include "experiments/level_walk.h"
 
 #include <filesystem>
+#include <map>
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -392,6 +393,46 @@ INSTANTIATE_TEST_SUITE_P(OpenArena, GenerateWalksOnQuake3Map,
                                            InstalledMap{"pak6-patch088.pk3", "oa_koth2"},
                                            InstalledMap{"pak6-patch088.pk3", "czest2ctf"}),
                          [](const auto& info) { return std::string(info.param.map); });
+
+// The walks shipped in experiments/scenes/levels, read back from their files: the same
+// checks, on the installed maps they name.
+TEST(ShippedLevelWalks, StandOnFloorsWithHeadroomAndClearKneesAndChest) {
+  const std::filesystem::path folder =
+      std::filesystem::path(SIGHTLINE_SOURCE_DIR) / "experiments/scenes/levels";
+  std::map<std::string, camera::Level> levels;
+  int walks = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    const YAML::Node scene = YAML::LoadFile(entry.path().string());
+    camera::LevelSpec spec;
+    spec.file = scene["level"]["file"].as<std::string>();
+    spec.map = scene["level"]["map"].as<std::string>("");
+    if (!std::filesystem::exists(spec.file)) continue;
+    const std::string key = spec.file + "|" + spec.map;
+    if (!levels.count(key)) levels.emplace(key, camera::load_level(spec));
+    LevelWalk walk;
+    for (const YAML::Node& k : scene["trajectory"]) {
+      camera::Keyframe keyframe;
+      keyframe.t = k["t"].as<double>();
+      for (int a = 0; a < 3; ++a) keyframe.position[a] = k["position"][a].as<double>();
+      keyframe.yaw = k["yaw"].as<double>();
+      if (!walk.keyframes.empty()) {
+        walk.length_metres += (keyframe.position - walk.keyframes.back().position).norm();
+      }
+      walk.keyframes.push_back(keyframe);
+    }
+    expect_walkable(levels.at(key).mesh, walk);
+    // Six decimals: speeds and the facing are checked on rounded numbers.
+    WalkOptions options;
+    options.max_speed += 1e-3;
+    options.min_speed -= 1e-3;
+    expect_person_like(walk, options);
+    ++walks;
+  }
+  if (walks == 0) GTEST_SKIP() << "no shipped walk names an installed map";
+  EXPECT_GE(walks, 20);
+}
 
 }  // namespace
 }  // namespace sightline::experiments
