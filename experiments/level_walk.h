@@ -25,21 +25,21 @@ namespace sightline::experiments {
 struct WalkOptions {
   // The person (Recast's agent). Step 0.56 m is Quake III's 18 units: its stairs' risers
   // are up to 16-18 units, and a smaller step leaves them unconnected.
-  double agent_radius = 0.3;       // metres
-  double agent_height = 1.8;       // metres
-  double agent_step = 0.56;        // metres: the highest ledge walked up
-  double max_slope_degrees = 45;   // steeper floors are not walkable
-  double cell_size = 0.15;         // metres: Recast's voxel size across
+  double agent_radius = 0.3;      // metres
+  double agent_height = 1.8;      // metres
+  double agent_step = 0.56;       // metres: the highest ledge walked up
+  double max_slope_degrees = 45;  // steeper floors are not walkable
+  double cell_size = 0.15;        // metres: Recast's voxel size across
   // Metres up. Recast counts the step in whole cells (floor(step / cell_height)) and puts a
   // floor's top at the cell above it, so a riser can read one cell taller than it is: at
   // 0.05 the step counts 11 cells (0.55 m) and Quake III's 16-unit (0.5 m) risers always
   // connect; at 0.1 it would count 5 cells and those risers would read 5 or 6.
   double cell_height = 0.05;
   // The walk.
-  double min_speed = 1.5, max_speed = 4.0;        // m/s, drawn per leg
-  double min_seconds = 40, max_seconds = 120;     // per walk, drawn
-  double stop_probability = 0.15;  // per corner: stop and turn on the spot
-  double turn_rate_degrees = 360;  // deg/s when turning on the spot or at a corner
+  double min_speed = 1.5, max_speed = 4.0;     // m/s, drawn per route from goal to goal
+  double min_seconds = 40, max_seconds = 120;  // per walk, drawn
+  double stop_probability = 0.15;              // per corner: stop and turn on the spot
+  double turn_rate_degrees = 360;              // deg/s when turning on the spot or at a corner
   int walks = 1;
   std::uint64_t seed = 1;
   // Empty when usable, else which field is wrong and why.
@@ -54,16 +54,16 @@ struct LevelWalk {
 
 // The navigation mesh the walks were planned on (navigation_mesh.h).
 struct NavigationMeshStats {
-  int grid_width = 0, grid_depth = 0;  // Recast's cells across x and z
-  double cell_size = 0;                // metres across (raised from the options on a big level)
-  double cell_height = 0;              // metres up
-  int polygons = 0;                    // all walkable polygons
-  int region_polygons = 0;             // polygons of the connected region walked
-  int anchors = 0, region_anchors = 0; // anchors given, and on the region walked
-  double walkable_area = 0;            // m^2, all polygons (seen from above)
-  double region_area = 0;              // m^2, the connected region walked
-  double build_seconds = 0;            // Recast and Detour, wall clock
-  std::string note;                    // what was adjusted and why (empty if nothing)
+  int grid_width = 0, grid_depth = 0;   // Recast's cells across x and z
+  double cell_size = 0;                 // metres across (raised from the options on a big level)
+  double cell_height = 0;               // metres up
+  int polygons = 0;                     // all walkable polygons
+  int region_polygons = 0;              // polygons of the connected region walked
+  int anchors = 0, region_anchors = 0;  // anchors given, and on the region walked
+  double walkable_area = 0;             // m^2, all polygons (seen from above)
+  double region_area = 0;               // m^2, the connected region walked
+  double build_seconds = 0;             // Recast and Detour, wall clock
+  std::string note;                     // what was adjusted and why (empty if nothing)
 };
 
 struct LevelWalks {

@@ -32,12 +32,14 @@ template <class T, void (*Free)(T*)>
 struct RecastDeleter {
   void operator()(T* p) const { Free(p); }
 };
-using HeightfieldPtr = std::unique_ptr<rcHeightfield, RecastDeleter<rcHeightfield, rcFreeHeightField>>;
-using CompactPtr =
-    std::unique_ptr<rcCompactHeightfield, RecastDeleter<rcCompactHeightfield, rcFreeCompactHeightfield>>;
+using HeightfieldPtr =
+    std::unique_ptr<rcHeightfield, RecastDeleter<rcHeightfield, rcFreeHeightField>>;
+using CompactPtr = std::unique_ptr<rcCompactHeightfield,
+                                   RecastDeleter<rcCompactHeightfield, rcFreeCompactHeightfield>>;
 using ContoursPtr = std::unique_ptr<rcContourSet, RecastDeleter<rcContourSet, rcFreeContourSet>>;
 using PolyMeshPtr = std::unique_ptr<rcPolyMesh, RecastDeleter<rcPolyMesh, rcFreePolyMesh>>;
-using DetailPtr = std::unique_ptr<rcPolyMeshDetail, RecastDeleter<rcPolyMeshDetail, rcFreePolyMeshDetail>>;
+using DetailPtr =
+    std::unique_ptr<rcPolyMeshDetail, RecastDeleter<rcPolyMeshDetail, rcFreePolyMeshDetail>>;
 
 std::string metres(double v) {
   std::ostringstream out;
@@ -56,8 +58,8 @@ struct NavigationMesh::Impl {
   dtNavMesh* nav = nullptr;
   dtNavMeshQuery* query = nullptr;
   dtQueryFilter filter;
-  std::vector<dtPolyRef> region;     // the largest region's polygons
-  std::vector<double> cumulative;    // their areas, summed in order (for drawing points)
+  std::vector<dtPolyRef> region;   // the largest region's polygons
+  std::vector<double> cumulative;  // their areas, summed in order (for drawing points)
   ~Impl() {
     dtFreeNavMeshQuery(query);
     dtFreeNavMesh(nav);
@@ -99,7 +101,7 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   cfg.walkableRadius = static_cast<int>(std::ceil(options.agent_radius / cs));
   cfg.maxEdgeLen = static_cast<int>(12.0 / cs);
   cfg.maxSimplificationError = 1.3f;
-  cfg.minRegionArea = 8 * 8;     // cells: drops specks left by erosion
+  cfg.minRegionArea = 8 * 8;  // cells: drops specks left by erosion
   cfg.mergeRegionArea = 20 * 20;
   cfg.maxVertsPerPoly = 6;
   cfg.detailSampleDist = static_cast<float>(6 * cs);
@@ -166,8 +168,8 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
         << 2 * options.agent_radius << " m wide, stepping " << options.agent_step
         << " m, on slopes up to " << options.max_slope_degrees << " degrees: " << why
         << " (the level: " << nt << " triangles, " << walkable_triangles
-        << " of them floors, within " << metres(extent.x()) << " x " << metres(extent.y())
-        << " x " << metres(extent.z()) << " m)";
+        << " of them floors, within " << metres(extent.x()) << " x " << metres(extent.y()) << " x "
+        << metres(extent.z()) << " m)";
     return WalkError(out.str());
   };
   if (cset->nconts == 0) throw no_region("no floor is large enough with room above it");
@@ -263,7 +265,8 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   any.setIncludeFlags(0xffff);
   const float reach[3] = {1.0f, 2.5f, 1.0f};  // a spawn point is a player's centre, ~0.75 m up
   for (const Eigen::Vector3d& a : anchors) {
-    const float p[3] = {static_cast<float>(a.x()), static_cast<float>(a.y()), static_cast<float>(a.z())};
+    const float p[3] = {static_cast<float>(a.x()), static_cast<float>(a.y()),
+                        static_cast<float>(a.z())};
     dtPolyRef ref = 0;
     float nearest[3];
     if (dtStatusSucceed(impl_->query->findNearestPoly(p, reach, &any, &ref, nearest)) && ref != 0) {
@@ -345,7 +348,8 @@ std::vector<NavigationMesh::RoutePoint> NavigationMesh::route(const Eigen::Vecto
   dtPolyRef start = 0, end = 0;
   float sa[3], sb[3];
   const dtNavMeshQuery& q = *impl_->query;
-  if (dtStatusFailed(q.findNearestPoly(a, half, &impl_->filter, &start, sa)) || start == 0) return {};
+  if (dtStatusFailed(q.findNearestPoly(a, half, &impl_->filter, &start, sa)) || start == 0)
+    return {};
   if (dtStatusFailed(q.findNearestPoly(b, half, &impl_->filter, &end, sb)) || end == 0) return {};
   std::vector<dtPolyRef> polys(kMaxRoutePolygons);
   int npolys = 0;
@@ -377,8 +381,7 @@ std::vector<NavigationMesh::RoutePoint> NavigationMesh::route(const Eigen::Vecto
   std::vector<RoutePoint> out;
   std::size_t next_corner = 0;
   for (const Eigen::Vector3d& p : all) {
-    const bool corner =
-        next_corner < corners.size() && (p - corners[next_corner]).norm() < 1e-3;
+    const bool corner = next_corner < corners.size() && (p - corners[next_corner]).norm() < 1e-3;
     if (corner) ++next_corner;
     out.push_back({p, corner});
   }

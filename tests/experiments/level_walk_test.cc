@@ -5,15 +5,13 @@
 // the generator's probe, not Recast, not Embree).
 #include "experiments/level_walk.h"
 
-#include <filesystem>
-#include <map>
-
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
-
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <string>
 
 #include "domains/camera/level/level.h"
@@ -74,7 +72,8 @@ TriangleMesh stairs_level(double riser) {
   add_floor(mesh, 0, 0, 14, 12, 0);
   add_walls(mesh, 0, 0, 20, 12, 5 * riser + 3);
   add_box(mesh, {14, 0, 0}, {20, 5 * riser, 12});
-  for (int i = 1; i <= 4; ++i) add_box(mesh, {14 - (5 - i) * 0.5, 0, 4}, {14 - (4 - i) * 0.5, i * riser, 8});
+  for (int i = 1; i <= 4; ++i)
+    add_box(mesh, {14 - (5 - i) * 0.5, 0, 4}, {14 - (4 - i) * 0.5, i * riser, 8});
   add_box(mesh, {5, 0, 5}, {6, 4, 6});
   add_box(mesh, {8, 1.5, 2}, {10, 1.7, 10});
   add_box(mesh, {2, 0.45, 8}, {3, 0.6, 12});
@@ -388,6 +387,8 @@ INSTANTIATE_TEST_SUITE_P(OpenArena, GenerateWalksOnQuake3Map,
                          ::testing::Values(InstalledMap{"pak6-patch088.pk3", "oa_thor"},
                                            InstalledMap{"pak6-patch088.pk3", "aggressor"},
                                            InstalledMap{"pak6-patch088.pk3", "am_lavaarena"},
+                                           // A stop with no turn left a keyframe pair 40 ns apart.
+                                           InstalledMap{"pak6-patch085.pk3", "ctf_inyard"},
                                            // Both have a floor far below the arena,
                                            // larger than it.
                                            InstalledMap{"pak6-patch088.pk3", "oa_koth2"},
