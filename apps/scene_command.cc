@@ -38,6 +38,17 @@ void check_scene(const std::string& path) {
     std::cout << " within " << vec(b.min) << " .. " << vec(b.max);
   }
   std::cout << "\n";
+  if (const camera::Level* level = scene.level()) {
+    const camera::Aabb b = scene.triangle_index().bounds();
+    std::cout << "  level:      " << level->file;
+    if (!level->map.empty()) std::cout << " map " << level->map;
+    std::cout << " (" << level->format << ", scale " << level->transform.scale << ", up "
+              << camera::to_string(level->transform.up) << "): "
+              << plural(level->mesh.size(), "triangle") << " within " << vec(b.min) << " .. "
+              << vec(b.max) << "; solid volumes: "
+              << (level->solid ? level->solid->describe() : std::string("none (mesh)"))
+              << "; loaded in " << level->load_seconds << " s\n";
+  }
   std::size_t enclosed = 0;
   std::string names;
   for (const camera::Area& a : scene.areas()) {

@@ -1,6 +1,6 @@
 // Per-frame time of the chase camera (ChaseCamera::update with the `occlusion-octree`
 // solver, the default) on generated scenes of 10, 1,000 and 10,000 boxes, and on the thesis
-// scenes (experiments/scenes/). This is the figure a game programmer asks for: is the camera
+// scenes (experiments/scenes/) and the level walks (experiments/scenes/levels/). This is the figure a game programmer asks for: is the camera
 // cheap enough to run every frame? Target: p99 under 200 us at 1,000 boxes on one core.
 //
 // Google Benchmark's statistics are per iteration, so one iteration here is a whole walk
@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,22 @@ void BM_ThesisScene(benchmark::State& state, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Walks on real levels (experiments/scenes/levels/, made by `sightline level walk`): the
+  // per-frame distribution over one whole walk (the level is loaded once, outside timing).
+  const std::string levels = std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/levels";
+  if (std::filesystem::is_directory(levels)) {
+    for (const std::string& path : sightline::experiments::scene_files(levels)) {
+      auto scene = std::make_shared<const Scene>(sightline::camera::read_scene_file(path));
+      benchmark::RegisterBenchmark(
+          ("BM_LevelWalk/" + std::filesystem::path(path).stem().string()).c_str(),
+          [scene](benchmark::State& state) {
+            walk(state, *scene, "occlusion-octree");
+            state.counters["triangles"] = static_cast<double>(scene->triangle_index().triangle_count());
+          })
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
   for (const std::string& path : sightline::experiments::scene_files(
            std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes")) {
     benchmark::RegisterBenchmark(

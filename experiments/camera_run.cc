@@ -9,6 +9,13 @@ MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfi
   MetricsInput input;
   input.boxes.reserve(scene.solids().size());
   for (const auto& solid : scene.solids()) input.boxes.push_back({solid.box.min, solid.box.max});
+  if (const camera::Level* level = scene.level()) {
+    input.triangles = std::make_shared<const IndependentTriangles>(level->mesh);
+    if (level->solid) {
+      std::shared_ptr<const camera::SolidVolume> solid = level->solid;
+      input.solid_at = [solid](const Eigen::Vector3d& p) { return solid->solid_at(p); };
+    }
+  }
   input.character_size = scene.character().size;
   input.clearance_radius = profile.clearance_radius;
   // Camera positions are written with 6 decimals: allow for that rounding.
@@ -65,7 +72,7 @@ std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) 
       << "visible fraction of the body " << m.visible_fraction_mean * 100 << "%; " << m.cuts
       << " cut" << (m.cuts == 1 ? "" : "s") << " and " << m.unflagged_jumps
       << " unflagged jumps; " << m.clearance_violations
-      << " frames inside the clearance radius; cost mean " << m.cost_mean << ", max "
+      << " frames inside the clearance radius" << (m.solid_frames > 0 ? ", " + std::to_string(m.solid_frames) + " inside solid matter" : std::string()) << "; cost mean " << m.cost_mean << ", max "
       << m.cost_max << "; solve time median " << m.solve_us_p50 << " us, p99 "
       << m.solve_us_p99 << " us; mean deviation from the profile: height "
       << m.height_deviation_mean << " m, distance " << m.distance_deviation_mean

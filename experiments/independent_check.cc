@@ -41,23 +41,30 @@ double distance_to_geometry(const std::vector<SolidBox>& boxes, const Eigen::Vec
   return best;
 }
 
-double visible_body_fraction(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& eye,
-                             const Eigen::Vector3d& feet, const Eigen::Vector3d& size) {
+std::vector<Eigen::Vector3d> body_check_points(const Eigen::Vector3d& feet,
+                                               const Eigen::Vector3d& size) {
   // A 3 x 5 x 3 grid (x, y, z) over the box inset by 10%: 45 points, dense enough that one
   // point is ~2% of the body, and independent of how the controller samples.
-  int visible = 0, total = 0;
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(45);
   for (int ix = 0; ix < 3; ++ix) {
     for (int iy = 0; iy < 5; ++iy) {
       for (int iz = 0; iz < 3; ++iz) {
-        const Eigen::Vector3d point(feet.x() + size.x() * 0.8 * (ix / 2.0 - 0.5),
-                                    feet.y() + size.y() * (0.1 + 0.8 * iy / 4.0),
-                                    feet.z() + size.z() * 0.8 * (iz / 2.0 - 0.5));
-        ++total;
-        if (!segment_blocked(boxes, eye, point)) ++visible;
+        points.emplace_back(feet.x() + size.x() * 0.8 * (ix / 2.0 - 0.5),
+                            feet.y() + size.y() * (0.1 + 0.8 * iy / 4.0),
+                            feet.z() + size.z() * 0.8 * (iz / 2.0 - 0.5));
       }
     }
   }
-  return static_cast<double>(visible) / total;
+  return points;
+}
+
+double visible_body_fraction(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& eye,
+                             const Eigen::Vector3d& feet, const Eigen::Vector3d& size) {
+  const std::vector<Eigen::Vector3d> points = body_check_points(feet, size);
+  int visible = 0;
+  for (const Eigen::Vector3d& p : points) visible += !segment_blocked(boxes, eye, p);
+  return static_cast<double>(visible) / static_cast<double>(points.size());
 }
 
 }  // namespace sightline::experiments

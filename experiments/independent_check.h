@@ -27,5 +27,8 @@ double distance_to_geometry(const std::vector<SolidBox>& boxes, const Eigen::Vec
 // own surface never blocks itself. The character is not a solid box here.
 double visible_body_fraction(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& eye,
                              const Eigen::Vector3d& feet, const Eigen::Vector3d& size);
+// The 45 body points visible_body_fraction tests.
+std::vector<Eigen::Vector3d> body_check_points(const Eigen::Vector3d& feet,
+                                               const Eigen::Vector3d& size);
 
 }  // namespace sightline::experiments

@@ -15,6 +15,27 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + (rank - lo) * (values[hi] - values[lo]);
 }
 
+bool segment_blocked(const MetricsInput& input, const Eigen::Vector3d& a,
+                     const Eigen::Vector3d& b) {
+  return segment_blocked(input.boxes, a, b) ||
+         (input.triangles && input.triangles->segment_blocked(a, b));
+}
+
+double distance_to_geometry(const MetricsInput& input, const Eigen::Vector3d& p) {
+  double d = distance_to_geometry(input.boxes, p);
+  if (input.triangles) d = input.triangles->distance(p, d);
+  return d;
+}
+
+double visible_body_fraction(const MetricsInput& input, const Eigen::Vector3d& eye,
+                             const Eigen::Vector3d& feet) {
+  if (!input.triangles) return visible_body_fraction(input.boxes, eye, feet, input.character_size);
+  const std::vector<Eigen::Vector3d> points = body_check_points(feet, input.character_size);
+  int visible = 0;
+  for (const Eigen::Vector3d& p : points) visible += !segment_blocked(input, eye, p);
+  return static_cast<double>(visible) / static_cast<double>(points.size());
+}
+
 RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInput& input) {
   RunMetrics m;
   m.frames = static_cast<int>(trace.size());
@@ -29,7 +50,7 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
   std::vector<double> solve_us;
   solve_us.reserve(trace.size());
   for (const TraceRow& r : trace) {
-    const bool hidden = segment_blocked(input.boxes, r.camera, r.target);
+    const bool hidden = segment_blocked(input, r.camera, r.target);
     if (hidden) {
       if (current_occlusion++ == 0) ++m.occlusion_episodes;
       m.longest_occlusion_frames = std::max(m.longest_occlusion_frames, current_occlusion);
@@ -37,11 +58,11 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
       ++visible_frames;
       current_occlusion = 0;
     }
-    const double fraction =
-        visible_body_fraction(input.boxes, r.camera, r.character, input.character_size);
+    const double fraction = visible_body_fraction(input, r.camera, r.character);
     fraction_sum += fraction;
     m.visible_fraction_min = std::min(m.visible_fraction_min, fraction);
-    const double clearance = distance_to_geometry(input.boxes, r.camera);
+    const double clearance = distance_to_geometry(input, r.camera);
+    if (input.solid_at && input.solid_at(r.camera)) ++m.solid_frames;
     m.min_clearance = std::min(m.min_clearance, clearance);
     // A small tolerance: positions are written with 4 decimals.
     if (clearance < input.clearance_radius - 1e-3) ++m.clearance_violations;
@@ -122,7 +143,7 @@ std::vector<std::string> metric_names() {
           "speed_max",        "jerk_p99",           "height_dev_mean",
           "distance_dev_mean", "orientation_dev_mean", "cost_mean",
           "cost_max",         "solve_us_p50",       "solve_us_p99",
-          "solve_us_max"};
+          "solve_us_max",     "solid_frames"};
 }
 
 std::vector<double> metric_values(const RunMetrics& m) {
@@ -133,7 +154,8 @@ std::vector<double> metric_values(const RunMetrics& m) {
           static_cast<double>(m.cuts), m.shortest_shot_seconds,
           static_cast<double>(m.unflagged_jumps), m.speed_p99, m.speed_max, m.jerk_p99,
           m.height_deviation_mean, m.distance_deviation_mean, m.orientation_deviation_mean,
-          m.cost_mean, m.cost_max, m.solve_us_p50, m.solve_us_p99, m.solve_us_max};
+          m.cost_mean, m.cost_max, m.solve_us_p50, m.solve_us_p99, m.solve_us_max,
+          static_cast<double>(m.solid_frames)};
 }
 
 }  // namespace sightline::experiments

@@ -8,16 +8,24 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "experiments/independent_check.h"
+#include "experiments/independent_triangles.h"
 #include "experiments/trace.h"
 
 namespace sightline::experiments {
 
 struct MetricsInput {
   std::vector<SolidBox> boxes;
+  // A level's triangles for the independent check (null without a level), and its solid
+  // volume (empty without one): a camera inside solid matter or outside the world counts
+  // in `solid_frames`.
+  std::shared_ptr<const IndependentTriangles> triangles;
+  std::function<bool(const Eigen::Vector3d&)> solid_at;
   Eigen::Vector3d character_size{0.6, 1.8, 0.6};
   double clearance_radius = 0.2;  // metres; the camera sphere
   // A frame-to-frame move longer than this without a cut flag is an unflagged jump.
@@ -32,6 +40,7 @@ struct RunMetrics {
   int occlusion_episodes = 0;        // maximal runs of frames with the look-at hidden
   int longest_occlusion_frames = 0;
   int clearance_violations = 0;      // frames with the camera inside or within its radius
+  int solid_frames = 0;              // frames with the camera inside a level's solid volume
   double min_clearance = 0;          // metres (0 when inside)
   int cuts = 0;
   double shortest_shot_seconds = 0;  // between cuts (the start counts; the open last shot not)
@@ -45,6 +54,12 @@ struct RunMetrics {
   double cost_mean = 0, cost_max = 0;
   double solve_us_p50 = 0, solve_us_p99 = 0, solve_us_max = 0;
 };
+
+// Independent visibility and clearance against everything in `input` (boxes and triangles).
+bool segment_blocked(const MetricsInput& input, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+double distance_to_geometry(const MetricsInput& input, const Eigen::Vector3d& p);
+double visible_body_fraction(const MetricsInput& input, const Eigen::Vector3d& eye,
+                             const Eigen::Vector3d& feet);
 
 RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInput& input);
 

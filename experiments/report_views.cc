@@ -59,7 +59,8 @@ PlaneView fit_view(const camera::Scene& scene, const RunDrawing& run, int u_axis
       grow(s.box.max.cwiseMin(near_hi));
     }
   }
-  grow(Eigen::Vector3d(lo.x(), 0, lo.z()));  // the ground is always in the side view
+  // The ground is always in the side view of box scenes; a level has its own floors.
+  if (scene.level() == nullptr) grow(Eigen::Vector3d(lo.x(), 0, lo.z()));
   PlaneView view;
   view.u_axis = u_axis;
   view.v_axis = v_axis;
@@ -91,6 +92,65 @@ void arrow(std::ostringstream& out, double ax, double ay, double bx, double by,
       << num(by - head * uy + head * 0.5 * ux) << "'/>";
 }
 
+void write_to_vector(void* context, void* data, int size);
+
+// A level drawn under a top or side view, ray cast through Scene::first_hit one ray per
+// pixel. Top view: a section looking down from 2.5 m above the highest point of the
+// character's path (so ceilings and roofs above the walk are cut away), surfaces shaded by
+// height from dark (low) to light (high). Side view: a section looking along the depth axis
+// from 1 m before the nearest point of the paths, shaded by how far the surface is behind
+// the section plane and by its slope.
+std::vector<unsigned char> level_backdrop_png(const camera::Scene& scene, const RunDrawing& run,
+                                              const PlaneView& view) {
+  const std::vector<TraceRow>& trace = *run.trace;
+  const int depth_axis = 3 - view.u_axis - view.v_axis;
+  double path_top = -INFINITY, path_bottom = INFINITY, depth_near = INFINITY;
+  for (const TraceRow& r : trace) {
+    path_top = std::max({path_top, r.character.y(), r.camera.y()});
+    path_bottom = std::min({path_bottom, r.character.y(), r.camera.y()});
+    depth_near = std::min({depth_near, r.character[depth_axis], r.camera[depth_axis]});
+  }
+  const double cut = path_top + 2.5;
+  const double span = std::max(1.0, cut - (path_bottom - 3));
+  constexpr double kDepth = 40;  // metres the side section looks into
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(view.width) * view.height * 3);
+  for (int j = 0; j < view.height; ++j) {
+    for (int i = 0; i < view.width; ++i) {
+      Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+      origin[view.u_axis] = view.u0 + (i + 0.5 - view.margin) / view.scale;
+      const double v = view.v_up ? (view.height - view.margin - (j + 0.5)) / view.scale
+                                 : (j + 0.5 - view.margin) / view.scale;
+      origin[view.v_axis] = view.v0 + v;
+      Eigen::Vector3d end = origin;
+      if (view.v_up) {
+        origin[depth_axis] = depth_near - 1;
+        end[depth_axis] = depth_near - 1 + kDepth;
+      } else {
+        origin.y() = cut;
+        end.y() = path_bottom - 60;
+      }
+      Eigen::Vector3d colour(0.984, 0.980, 0.969);  // the page's background: nothing there
+      if (const auto hit = scene.first_hit(origin, end)) {
+        const double light = 0.55 + 0.45 * std::abs(hit->normal.y());
+        double shade;
+        if (view.v_up) {
+          shade = 0.85 - 0.5 * std::min(1.0, hit->t);  // near: light, far: dark
+        } else {
+          const double height = cut + hit->t * (end.y() - cut);
+          shade = 0.35 + 0.6 * std::clamp((height - (cut - span)) / span, 0.0, 1.0);
+        }
+        colour = light * shade * Eigen::Vector3d(0.92, 0.90, 0.86);
+      }
+      unsigned char* px = &pixels[(static_cast<std::size_t>(j) * view.width + i) * 3];
+      for (int k = 0; k < 3; ++k) px[k] = static_cast<unsigned char>(std::clamp(colour[k], 0.0, 1.0) * 255);
+    }
+  }
+  std::vector<unsigned char> png;
+  stbi_write_png_to_func(&write_to_vector, &png, view.width, view.height, 3, pixels.data(),
+                         view.width * 3);
+  return png;
+}
+
 std::string plane_view_svg(const camera::Scene& scene, const RunDrawing& run,
                            const PlaneView& view, const std::string& title) {
   const std::vector<TraceRow>& trace = *run.trace;
@@ -107,7 +167,11 @@ std::string plane_view_svg(const camera::Scene& scene, const RunDrawing& run,
         << "' width='" << num(std::abs(x1 - x0)) << "' height='" << num(std::abs(y1 - y0))
         << "' " << style << "/>";
   };
-  if (view.v_up) {  // the ground line
+  if (scene.level() != nullptr) {
+    out << "<image x='0' y='0' width='" << view.width << "' height='" << view.height
+        << "' href='data:image/png;base64," << base64(level_backdrop_png(scene, run, view))
+        << "'/>";
+  } else if (view.v_up) {  // the ground line
     const double gy = view.py(Eigen::Vector3d::Zero());
     out << "<line x1='0' x2='" << view.width << "' y1='" << num(gy) << "' y2='" << num(gy)
         << "' stroke='#8a7' stroke-width='1.5'/>";
@@ -252,6 +316,7 @@ std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const Tra
   const double half_h = std::tan(30.0 * kPi / 180), half_w = half_h * width / height;
   const Eigen::Vector3d light = Eigen::Vector3d(0.4, 0.9, 0.3).normalized();
   const camera::Aabb body = scene.character().body_at(row.character);
+  const bool has_level = scene.level() != nullptr;
   constexpr double kFar = 200;
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
@@ -263,18 +328,26 @@ std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const Tra
       Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
       Eigen::Vector3d base = Eigen::Vector3d::Zero();
       int what = 0;  // 0 sky, 1 ground, 2 box, 3 character
-      if (d.y() < -1e-9 && eye.y() > 0) {
+      // The checkered ground at y = 0 stands in for the floor of box scenes; a level has
+      // its own floors.
+      if (!has_level && d.y() < -1e-9 && eye.y() > 0) {
         best = -eye.y() / d.y();
         what = 1;
       }
       if (const auto hit = scene.first_hit(eye, eye + kFar * d); hit && hit->t * kFar < best) {
         best = hit->t * kFar;
         what = 2;
-        const camera::Aabb& b = scene.solids()[hit->box].box;
-        normal = face_normal(b, eye + best * d);
-        const unsigned h = static_cast<unsigned>(hit->box) * 2654435761u;
-        const double tint = ((h >> 8) & 0xff) / 255.0 * 0.15;
-        base = Eigen::Vector3d(0.72 + tint, 0.68 + tint * 0.5, 0.60);
+        normal = hit->normal.squaredNorm() > 0 ? hit->normal : Eigen::Vector3d(-d);
+        if (hit->source == camera::SurfaceHit::Source::kBox) {
+          const unsigned h = static_cast<unsigned>(hit->index) * 2654435761u;
+          const double tint = ((h >> 8) & 0xff) / 255.0 * 0.15;
+          base = Eigen::Vector3d(0.72 + tint, 0.68 + tint * 0.5, 0.60);
+        } else {
+          // Level surfaces: floors greenish grey, walls warm grey, by how much they face up.
+          const double up_facing = std::abs(normal.y());
+          base = up_facing > 0.7 ? Eigen::Vector3d(0.60, 0.64, 0.56)
+                                 : Eigen::Vector3d(0.74, 0.69, 0.62);
+        }
       }
       if (const double tc = ray_box(eye, d, body); tc < best) {
         best = tc;

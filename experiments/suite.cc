@@ -452,6 +452,7 @@ camera::CameraProfile run_profile(const Suite& suite, const SuiteRun& run) {
   if (!entry.area_adaptation || !suite.camera_solvers[run.solver].area_adaptation) {
     profile.enclosed = {};
     profile.semi_enclosed = {};
+    profile.sensing.enabled = false;  // on levels, the sensed room adapts like an area
   }
   return profile;
 }

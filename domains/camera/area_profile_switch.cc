@@ -5,7 +5,10 @@
 namespace sightline::camera {
 
 AreaProfileSwitch::AreaProfileSwitch(const Scene& scene, const CameraProfile& profile)
-    : scene_(&scene), profile_(&profile) {
+    : scene_(&scene),
+      profile_(&profile),
+      senses_(scene.level() != nullptr && scene.areas().empty() && profile.sensing.enabled),
+      sensor_(scene, profile) {
   current_.desired_height = profile.height.desired;
   current_.desired_distance = profile.distance.desired;
   current_.desired_orientation = profile.orientation.desired;
@@ -32,8 +35,15 @@ EffectiveProfile AreaProfileSwitch::effective_at(const Eigen::Vector3d& feet) co
   return e;
 }
 
-AreaTransition AreaProfileSwitch::update(const Eigen::Vector3d& feet) {
-  const EffectiveProfile next = effective_at(feet);
+AreaTransition AreaProfileSwitch::update(const CharacterState& character) {
+  if (senses_) {
+    sensor_.update(character);
+    current_.desired_height = sensor_.desired_height();
+    current_.desired_distance = sensor_.desired_distance();
+    current_.desired_orientation = profile_->orientation.desired;
+    return {};
+  }
+  const EffectiveProfile next = effective_at(character.position);
   AreaTransition transition;
   if (next.area != current_.area) {
     transition.left = current_.area;

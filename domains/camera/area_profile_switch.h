@@ -14,6 +14,9 @@
 // Outside every area, and for anything not adapted, the profile's own values apply: leaving
 // an area restores them. The desired orientation and all weights are never changed here.
 // update() is O(log areas) and does not allocate.
+//
+// A scene with a level and no areas senses its room instead (space_sensor.h), unless the
+// profile turns sensing off: the same adaptation, with probe rays in place of area boxes.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,6 +24,7 @@
 
 #include "domains/camera/profile.h"
 #include "domains/camera/scene.h"
+#include "domains/camera/space_sensor.h"
 
 namespace sightline::camera {
 
@@ -43,10 +47,18 @@ class AreaProfileSwitch {
   // area the character starts in as entered).
   AreaProfileSwitch(const Scene& scene, const CameraProfile& profile);
 
-  // Recomputes the effective values for a character standing at `feet` and reports which
-  // area was left and which entered since the previous call (moving straight from one area
-  // into another reports both).
-  AreaTransition update(const Eigen::Vector3d& feet);
+  // Recomputes the effective values for the character and reports which area was left and
+  // which entered since the previous call (moving straight from one area into another
+  // reports both).
+  AreaTransition update(const CharacterState& character);
+  // The same for a character standing at `feet` (t = 0, facing +z).
+  AreaTransition update(const Eigen::Vector3d& feet) {
+    CharacterState standing;
+    standing.position = feet;
+    return update(standing);
+  }
+  // True when the room is sensed (a level without areas) rather than read from areas.
+  bool senses_space() const { return senses_; }
   const EffectiveProfile& current() const { return current_; }
 
   // The effective values at `feet` without changing state.
@@ -55,6 +67,8 @@ class AreaProfileSwitch {
  private:
   const Scene* scene_;
   const CameraProfile* profile_;
+  bool senses_ = false;
+  SpaceSensor sensor_;
   EffectiveProfile current_;
 };
 

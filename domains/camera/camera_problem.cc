@@ -102,7 +102,7 @@ AreaTransition CameraProblem::set_frame(const CharacterState& character,
     throw std::invalid_argument("camera frame interval dt must be > 0");
   }
   character_ = character;
-  const AreaTransition transition = areas_.update(character.position);
+  const AreaTransition transition = areas_.update(character);
   const EffectiveProfile& e = areas_.current();
   FrameValues values;
   values.feet = character.position;

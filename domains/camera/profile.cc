@@ -54,6 +54,12 @@ std::string CameraProfile::validate() const {
   }
   if (auto e = check_adaptation(enclosed, "areas.enclosed"); !e.empty()) return e;
   if (auto e = check_adaptation(semi_enclosed, "areas.semi-enclosed"); !e.empty()) return e;
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (!positive(sensing.ceiling_probe)) return "sensing.ceiling_probe must be > 0";
+  if (!positive(sensing.behind_probe)) return "sensing.behind_probe must be > 0";
+  if (!finite_non_negative(sensing.wall_margin)) return "sensing.wall_margin must be >= 0";
+  if (!finite_non_negative(sensing.min_distance)) return "sensing.min_distance must be >= 0";
+  if (!finite_non_negative(sensing.smoothing)) return "sensing.smoothing must be >= 0";
   return "";
 }
 

@@ -48,6 +48,21 @@ struct AreaAdaptation {
   bool operator==(const AreaAdaptation&) const = default;
 };
 
+// How the camera senses the space around the character on a level, which carries no areas
+// (space_sensor.h): probe rays for the ceiling above the character and the free room behind
+// it, low-passed over time, adapt the desired height and distance as an enclosed area would.
+// Scenes with areas keep the area rule and do not sense.
+struct SpaceSensing {
+  bool enabled = true;
+  double ceiling_probe = 6.0;   // metres above the look-at point a ceiling is looked for
+  double behind_probe = 12.0;   // metres probed behind the character (toward the ideal spot)
+  double wall_margin = 0.3;     // metres kept between the camera's sphere and the wall behind
+  double min_distance = 1.0;    // metres: the desired distance is never pulled in below this
+  double smoothing = 0.5;       // s: time constant of the low-pass on what the probes see
+
+  bool operator==(const SpaceSensing&) const = default;
+};
+
 struct CameraProfile {
   std::string name = "thesis-default";
   std::string description;
@@ -70,6 +85,9 @@ struct CameraProfile {
 
   AreaAdaptation enclosed{0.5, 0.35};
   AreaAdaptation semi_enclosed{0.5, 0.5};
+  // On levels: the ceiling adapts the height with `enclosed.ceiling_margin`, the room behind
+  // the character the distance (see SpaceSensing).
+  SpaceSensing sensing;
 
   // Constraint entries ({kind: ..., scope: [cam_y], ...}) built through the kind registry
   // over the variables cam_x, cam_y, cam_z and the frame parameters (see camera_problem.h).

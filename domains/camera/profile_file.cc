@@ -71,7 +71,8 @@ CameraProfile base_profile(const Spec& spec, int depth) {
 CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int depth) {
   if (!spec.is_map()) spec.fail("expected a camera profile (a mapping), got " + spec.preview());
   spec.check_keys({"name", "description", "base", "height", "distance", "orientation",
-                   "frame_coherence", "occlusion", "clearance", "search", "areas", "extras"});
+                   "frame_coherence", "occlusion", "clearance", "search", "areas", "sensing",
+                   "extras"});
   CameraProfile p = base_profile(spec, depth);
   p.name = spec.find("name") ? spec.at("name").as_string("a profile name") : fallback_name;
   if (const Spec* d = spec.find("description")) p.description = d->as_string("a description");
@@ -114,6 +115,27 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     if (const Spec* e = areas->find("enclosed")) p.enclosed = read_adaptation(*e, "enclosed");
     if (const Spec* s = areas->find("semi-enclosed")) {
       p.semi_enclosed = read_adaptation(*s, "semi-enclosed");
+    }
+  }
+  if (const Spec* sensing = spec.find("sensing")) {
+    sensing->check_keys({"enabled", "ceiling_probe", "behind_probe", "wall_margin",
+                         "min_distance", "smoothing"});
+    SpaceSensing& z = p.sensing;
+    if (const Spec* e = sensing->find("enabled")) z.enabled = e->as_bool();
+    if (const Spec* v = sensing->find("ceiling_probe")) {
+      z.ceiling_probe = read_positive(*v, "sensing.ceiling_probe (metres)");
+    }
+    if (const Spec* v = sensing->find("behind_probe")) {
+      z.behind_probe = read_positive(*v, "sensing.behind_probe (metres)");
+    }
+    if (const Spec* v = sensing->find("wall_margin")) {
+      z.wall_margin = read_non_negative(*v, "sensing.wall_margin (metres)");
+    }
+    if (const Spec* v = sensing->find("min_distance")) {
+      z.min_distance = read_non_negative(*v, "sensing.min_distance (metres)");
+    }
+    if (const Spec* v = sensing->find("smoothing")) {
+      z.smoothing = read_non_negative(*v, "sensing.smoothing (seconds)");
     }
   }
   if (const Spec* extras = spec.find("extras")) {

@@ -1,6 +1,9 @@
 #include "domains/camera/scene.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "domains/camera/constraints/clearance.h"
 
 namespace sightline::camera {
 namespace {
@@ -24,12 +27,96 @@ Scene::Scene(std::string name, std::vector<SolidBox> solids, std::vector<Area> a
       trajectory_(std::move(trajectory)),
       frame_rate_(frame_rate),
       solid_tree_(boxes_of(solids_)),
-      area_tree_(boxes_of(areas_)) {}
+      area_tree_(boxes_of(areas_)),
+      triangles_(std::make_shared<const TriangleIndex>()) {}
 
 Aabb Scene::world_bounds() const {
   Aabb bounds = solid_tree_.bounds();
   if (!area_tree_.empty()) bounds.merge(area_tree_.bounds());
+  if (!triangles_->empty()) bounds.merge(triangles_->bounds());
   return bounds;
+}
+
+void Scene::set_level(std::shared_ptr<const Level> level) {
+  level_ = std::move(level);
+  triangles_ = level_ ? std::make_shared<const TriangleIndex>(level_->mesh)
+                      : std::make_shared<const TriangleIndex>();
+}
+
+std::optional<SurfaceHit> Scene::first_hit(const Eigen::Vector3d& a,
+                                           const Eigen::Vector3d& b) const {
+  std::optional<SurfaceHit> best;
+  if (const auto box = solid_tree_.first_hit(a, b)) {
+    SurfaceHit hit;
+    hit.t = box->t;
+    hit.source = SurfaceHit::Source::kBox;
+    hit.index = box->box;
+    // The face entered: the axis whose slab the segment entered last, i.e. the one the hit
+    // point lies on; its normal faces the start.
+    if (hit.t > 0) {
+      const Aabb& bb = solid_tree_.box(box->box);
+      const Eigen::Vector3d p = a + hit.t * (b - a);
+      double closest = INFINITY;
+      for (int i = 0; i < 3; ++i) {
+        for (int side = 0; side < 2; ++side) {
+          const double plane = side == 0 ? bb.min[i] : bb.max[i];
+          const double gap = std::abs(p[i] - plane);
+          if (gap < closest) {
+            closest = gap;
+            hit.normal.setZero();
+            hit.normal[i] = side == 0 ? -1 : 1;
+          }
+        }
+      }
+    }
+    best = hit;
+  }
+  if (const auto tri = triangles_->first_hit(a, b); tri && (!best || tri->t < best->t)) {
+    SurfaceHit hit;
+    hit.t = tri->t;
+    hit.source = SurfaceHit::Source::kTriangle;
+    hit.index = tri->triangle;
+    hit.normal = tri->normal.dot(b - a) > 0 ? -tri->normal : tri->normal;
+    best = hit;
+  }
+  return best;
+}
+
+std::optional<NearestSurface> Scene::nearest_surface(const Eigen::Vector3d& p,
+                                                     double limit) const {
+  std::optional<NearestSurface> best;
+  if (const auto box = solid_tree_.nearest(p, limit)) {
+    best = NearestSurface{box->signed_distance,
+                          signed_distance_gradient(solid_tree_.box(box->box), p)};
+  }
+  if (triangles_->empty()) return best;
+  if (level_->solid && level_->solid->solid_at(p)) {
+    // Inside solid matter: minus the distance to the nearest face, whose gradient points
+    // deeper in (away from that face is further inside); -limit when no face is that close.
+    NearestSurface inside{-limit, Eigen::Vector3d::Zero()};
+    if (const auto tri = triangles_->nearest(p, limit)) {
+      const Eigen::Vector3d toward = tri->point - p;
+      const double norm = toward.norm();
+      inside.signed_distance = -tri->distance;
+      if (norm > 0) inside.gradient = toward / norm;
+    }
+    if (!best || inside.signed_distance < best->signed_distance) best = inside;
+    return best;
+  }
+  if (best && best->signed_distance <= 0) return best;  // inside a box: no face is nearer
+  if (const auto tri = triangles_->nearest(p, best ? best->signed_distance : limit)) {
+    const Eigen::Vector3d away = p - tri->point;
+    const double norm = away.norm();
+    best = NearestSurface{tri->distance,
+                          norm > 0 ? Eigen::Vector3d(away / norm) : Eigen::Vector3d::Zero()};
+  }
+  return best;
+}
+
+bool Scene::open_at(const Eigen::Vector3d& p) const {
+  if (level_ && level_->solid && level_->solid->solid_at(p)) return false;
+  const auto box = solid_tree_.nearest(p, 0.0);
+  return !box;
 }
 
 void Scene::set_profile(CameraProfile profile, std::string source) {
@@ -39,13 +126,40 @@ void Scene::set_profile(CameraProfile profile, std::string source) {
 
 Eigen::Vector3d Scene::start_camera_position() const {
   if (camera_start_) return *camera_start_;
-  return ideal_camera_position(character_at(trajectory_.start_time()), profile_.height.desired,
-                               profile_.distance.desired, profile_.orientation.desired);
+  const CharacterState start = character_at(trajectory_.start_time());
+  const Eigen::Vector3d ideal = ideal_camera_position(
+      start, profile_.height.desired, profile_.distance.desired, profile_.orientation.desired);
+  if (level_ == nullptr) return ideal;
+  // On a level the ideal spot may be inside a wall or behind one: pull in along the line
+  // from the look-at point toward it, as a spring arm does, to the farthest point that is
+  // open, clear of surfaces and sees the look-at point.
+  const Eigen::Vector3d look = character_.look_at(start.position);
+  const double r = profile_.clearance_radius;
+  auto usable = [&](const Eigen::Vector3d& p) {
+    return clearance(p, r + 1e-6) >= r && line_of_sight(p, look);
+  };
+  if (usable(ideal)) return ideal;
+  constexpr int kSteps = 64;
+  for (int i = kSteps - 1; i > 0; --i) {
+    const Eigen::Vector3d p = look + (static_cast<double>(i) / kSteps) * (ideal - look);
+    if (usable(p)) return p;
+  }
+  return ideal;  // nothing better along that line: the controller's first frame cuts away
 }
 
 double Scene::clearance(const Eigen::Vector3d& p, double limit) const {
-  const auto nearest = solid_tree_.nearest(p, limit);
-  return nearest ? nearest->signed_distance : limit;
+  double d = limit;
+  if (const auto box = solid_tree_.nearest(p, limit)) d = box->signed_distance;
+  if (triangles_->empty()) return d;
+  if (level_->solid && level_->solid->solid_at(p)) {
+    // Inside solid matter: the depth is the distance to the nearest face (or `limit` when
+    // none is that close), counted negative.
+    const auto tri = triangles_->nearest(p, limit);
+    return std::min(d, tri ? -tri->distance : -limit);
+  }
+  if (d <= 0) return d;  // inside or touching a box: no triangle is nearer
+  if (const auto tri = triangles_->nearest(p, d)) d = tri->distance;
+  return d;
 }
 
 std::vector<std::size_t> Scene::areas_containing(const Eigen::Vector3d& p) const {

@@ -1,17 +1,27 @@
 // Scene: the world a chase camera works in, and the geometric questions it answers.
 //
 // Solid axis-aligned boxes (walls, pillars, roofs; a door is a gap between wall boxes, so
-// visibility through doors is exact with no special case), semantic areas (enclosed rooms,
-// semi-enclosed courtyards) the camera adapts to, the character's body and path, and the
-// camera's start and profile. Boxes and areas each live in a BoxTree, so every query below
-// costs O(log n) in the number of boxes and none allocates.
+// visibility through doors is exact with no special case), optionally a level (a triangle
+// mesh read from a game level or a mesh file, with the solid volumes the format knows),
+// semantic areas (enclosed rooms, semi-enclosed courtyards) the camera adapts to, the
+// character's body and path, and the camera's start and profile.
+//
+// The geometric queries below are the one interface every user of the geometry goes
+// through (constraints, the controller, the baselines, the metrics' fast paths, the report's
+// ray-cast views), whatever the source: boxes live in a BoxTree, the level's triangles in an
+// Embree index (TriangleIndex), each O(log n) per query, none allocating. Boxes stay in the
+// BoxTree rather than moving into Embree as 12 triangles each: the BoxTree is exact on
+// touching and grazing (closed boxes), gives signed distances inside a box, and measured
+// faster on box scenes (docs/BENCHMARKS.md, "Boxes: BoxTree or Embree").
 //
 // Scenes are read from YAML by scene_file.h; the constructor takes already validated parts.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +29,8 @@
 #include "csp/input_error.h"
 #include "domains/camera/geometry/aabb.h"
 #include "domains/camera/geometry/box_tree.h"
+#include "domains/camera/geometry/triangle_index.h"
+#include "domains/camera/level/level.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/trajectory.h"
 
@@ -49,6 +61,25 @@ struct CharacterShape {
   }
 };
 
+// What a sight line or probe hits first: a solid box or a level triangle.
+struct SurfaceHit {
+  enum class Source { kBox, kTriangle };
+  double t = 0;          // segment parameter of the hit, in [0, 1] (0 when starting inside)
+  Source source = Source::kBox;
+  std::uint32_t index = 0;  // the box (into solids()) or the triangle (into level mesh)
+  // Unit normal of the surface hit, facing the segment's start (for shading and sliding);
+  // zero when the segment starts inside a box.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+};
+
+// The nearest solid surface to a point, for clearance and its gradient.
+struct NearestSurface {
+  // Distance to the nearest surface; < 0 inside a box or inside the level's solid volume.
+  double signed_distance = 0;
+  // Gradient of signed_distance in p (unit): which way to move to get farther from it.
+  Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+};
+
 class Scene {
  public:
   Scene(std::string name, std::vector<SolidBox> solids, std::vector<Area> areas,
@@ -63,8 +94,13 @@ class Scene {
   const std::vector<Area>& areas() const { return areas_; }
   const CharacterShape& character() const { return character_; }
   const Trajectory& trajectory() const { return trajectory_; }
-  // Bounds of the solid boxes and the areas (Aabb::empty() when there are none).
+  // Bounds of the solid boxes, the level and the areas (Aabb::empty() when there are none).
   Aabb world_bounds() const;
+
+  // The level, when the scene has one (null otherwise). Setting it builds its index.
+  const Level* level() const { return level_.get(); }
+  void set_level(std::shared_ptr<const Level> level);
+  const TriangleIndex& triangle_index() const { return *triangles_; }
 
   // The camera's start, when the file gives one; otherwise the profile's ideal spot.
   const std::optional<Eigen::Vector3d>& camera_start() const { return camera_start_; }
@@ -81,19 +117,27 @@ class Scene {
   CharacterState character_at(double t) const { return trajectory_.state_at(t); }
 
   // --- geometric queries (no allocation unless stated) ---
-  // True when the segment from a to b touches no solid box (touching a face blocks).
+  // True when the segment from a to b touches no solid box and no level triangle (touching
+  // a face blocks).
   bool line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-    return !solid_tree_.segment_blocked(a, b);
+    return !solid_tree_.segment_blocked(a, b) && !triangles_->segment_blocked(a, b);
   }
-  // The first solid box along the segment from a to b (t in [0, 1]; 0 when a is inside one).
-  std::optional<BoxTree::Hit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-    return solid_tree_.first_hit(a, b);
-  }
-  // Signed distance from p to the nearest solid box (< 0 inside one). Distances of `limit`
-  // or more are reported as `limit` (infinity with no boxes): a clearance test only needs to
-  // know whether something is nearer than the camera's radius, and the limit prunes the tree.
+  // The first solid surface along the segment from a to b (boxes and level triangles).
+  std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  // Signed distance from p to the nearest solid surface (< 0 inside a box or inside the
+  // level's solid volume). Distances of `limit` or more are reported as `limit` (infinity
+  // with no geometry): a clearance test only needs to know whether something is nearer than
+  // the camera's radius, and the limit prunes the search.
   double clearance(const Eigen::Vector3d& p,
                    double limit = std::numeric_limits<double>::infinity()) const;
+  // The nearest surface closer than `limit` with the gradient of the signed distance, for
+  // the clearance constraint's derivatives; nullopt when nothing is that close.
+  std::optional<NearestSurface> nearest_surface(
+      const Eigen::Vector3d& p, double limit = std::numeric_limits<double>::infinity()) const;
+  // False inside the level's solid volume (inside a wall, outside the world: a Quake III
+  // map's brushes) or inside a solid box; true elsewhere. Every camera position, cut
+  // target and probe must be open.
+  bool open_at(const Eigen::Vector3d& p) const;
   // Indices of the areas whose closed box contains p, ascending. Allocates: for tools.
   std::vector<std::size_t> areas_containing(const Eigen::Vector3d& p) const;
   // The innermost area containing p (smallest volume; ties go to the smaller index).
@@ -117,6 +161,9 @@ class Scene {
   std::string profile_source_ = "preset thesis-default";
   BoxTree solid_tree_;
   BoxTree area_tree_;
+  std::shared_ptr<const Level> level_;
+  // Shared, so scenes stay copyable; never null (empty without a level).
+  std::shared_ptr<const TriangleIndex> triangles_;
 };
 
 }  // namespace sightline::camera

@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
-#include <map>
+#include <memory>
 
 #include "csp/files/yaml_spec.h"
 #include "domains/camera/camera_problem.h"
@@ -50,8 +50,9 @@ const std::vector<Spec>& optional_list(const Spec& spec, const std::string& key,
 }
 
 std::vector<SolidBox> read_solids(const Spec& spec) {
+  // Names are labels (FORMATS.md): two boxes may share one, as the two halves of a wall
+  // split by a door often do.
   std::vector<SolidBox> solids;
-  std::map<std::string, int> names;  // name -> line of first use
   for (const Spec& entry : optional_list(spec, "boxes", "a list of boxes")) {
     if (!entry.is_map()) entry.fail("expected a box {name: ..., min: [x, y, z], max: [x, y, z]}");
     entry.check_keys({"name", "min", "max"});
@@ -62,21 +63,13 @@ std::vector<SolidBox> read_solids(const Spec& spec) {
                                  : "box '" + box.name + "'";
     box.box = read_box(entry, what);
     box.where = entry.where();
-    if (!box.name.empty()) {
-      auto [it, fresh] = names.emplace(box.name, entry.where().line);
-      if (!fresh) {
-        entry.find("name")->fail("box name '" + box.name + "' is already used at line " +
-                                 std::to_string(it->second));
-      }
-    }
     solids.push_back(std::move(box));
   }
   return solids;
 }
 
 std::vector<Area> read_areas(const Spec& spec) {
-  std::vector<Area> areas;
-  std::map<std::string, int> names;
+  std::vector<Area> areas;  // names are labels here too, not keys
   for (const Spec& entry : optional_list(spec, "areas", "a list of areas")) {
     if (!entry.is_map()) {
       entry.fail("expected an area {name: ..., kind: enclosed, min: [x, y, z], max: [x, y, z]}");
@@ -91,14 +84,39 @@ std::vector<Area> read_areas(const Spec& spec) {
     area.kind = *parsed;
     area.box = read_box(entry, "area '" + area.name + "'");
     area.where = entry.where();
-    auto [it, fresh] = names.emplace(area.name, entry.where().line);
-    if (!fresh) {
-      entry.fail("area name '" + area.name + "' is already used at line " +
-                 std::to_string(it->second));
-    }
     areas.push_back(std::move(area));
   }
   return areas;
+}
+
+// The `level:` block (FORMATS.md): the file relative to the scene's folder, an optional
+// map, scale and up; the level is loaded here, so a bad level file is reported with the
+// block's line.
+std::shared_ptr<const Level> read_level(const Spec& spec, const std::string& base_dir) {
+  const Spec* block = spec.find("level");
+  if (block == nullptr || block->is_null()) return nullptr;
+  if (!block->is_map()) {
+    block->fail("expected a level {file: PATH, map: NAME, scale: metres per unit, up: y|z}");
+  }
+  block->check_keys({"file", "map", "scale", "up"});
+  LevelSpec level;
+  const Spec& file = block->at("file");
+  const std::string path = file.as_string("the level's file path");
+  if (path.empty()) file.fail("expected the level's file path, got an empty string");
+  const std::filesystem::path given(path);
+  level.file = given.is_absolute() || base_dir.empty() ? path
+                                                       : (std::filesystem::path(base_dir) / given).string();
+  if (const Spec* map = block->find("map")) level.map = map->as_string("a map name");
+  if (const Spec* scale = block->find("scale")) {
+    level.scale = read_positive(*scale, "the level's scale (metres per file unit)");
+  }
+  if (const Spec* up = block->find("up")) {
+    const auto axis = up_axis_from_string(up->as_string("the level's up axis"));
+    if (!axis) up->fail("expected the level's up axis: y or z, got " + up->preview());
+    level.up = *axis;
+  }
+  level.where = block->where();
+  return std::make_shared<const Level>(load_level(level));
 }
 
 CharacterShape read_character(const Spec& spec) {
@@ -187,7 +205,7 @@ void check_trajectory(const Scene& scene, const std::vector<csp::SourceLocation>
 
 Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   if (!spec.is_map()) spec.fail("expected a scene (a mapping with name, boxes, trajectory ...)");
-  spec.check_keys({"name", "description", "frame_rate", "character", "boxes", "areas",
+  spec.check_keys({"name", "description", "frame_rate", "character", "level", "boxes", "areas",
                    "trajectory", "camera"});
   const std::string name = spec.at("name").as_string("the scene's name");
   if (name.empty()) spec.at("name").fail("expected a non-empty scene name");
@@ -207,8 +225,10 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
                                format_number(kMaxSceneFrames) + " frames");
   }
 
+  std::shared_ptr<const Level> level = read_level(spec, base_dir);
   Scene scene(name, std::move(solids), std::move(areas), character, std::move(trajectory),
               frame_rate);
+  scene.set_level(std::move(level));
   if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
 
   const Spec* camera = spec.find("camera");
@@ -224,6 +244,10 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
       const Eigen::Vector3d p = read_vector3(*start, "the camera's start position");
       if (auto nearest = scene.solid_tree().nearest(p, 0.0)) {
         start->fail("the camera's start position is inside " + solid_name(scene, nearest->box));
+      }
+      if (!scene.open_at(p)) {
+        start->fail("the camera's start position is inside the level's solid matter or "
+                    "outside its world");
       }
       scene.set_camera_start(p);
     }

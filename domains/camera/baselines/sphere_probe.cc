@@ -25,11 +25,17 @@ std::optional<double> SphereProbe::first_contact(const Eigen::Vector3d& a,
   // Touching already at the start (Unreal: a sweep that starts in penetration).
   if (scene_->clearance(a, radius_) < radius_) return 0.0;
   if (length == 0) return std::nullopt;
-  const std::optional<BoxTree::Hit> broad = grown_.first_hit(a, b);
-  if (!broad) return std::nullopt;  // no grown box is met, so no rounded one either
-  // Sphere tracing from the broad-phase hit: t advances by the gap (d - r) / length. The
-  // distance query is limited to what could still matter (the rest of the segment plus r).
-  double t = broad->t;
+  // Boxes: the sweep cannot touch a box before it enters that box grown by r, so tracing
+  // starts at the grown boxes' first hit (none hit: no box is touched). A level's triangles
+  // have no such broad phase here, so with a level the trace starts at a.
+  double t = 0;
+  if (scene_->triangle_index().empty()) {
+    const std::optional<BoxTree::Hit> broad = grown_.first_hit(a, b);
+    if (!broad) return std::nullopt;  // no grown box is met, so no rounded one either
+    t = broad->t;
+  }
+  // Sphere tracing: t advances by the gap (d - r) / length. The distance query is limited
+  // to what could still matter (the rest of the segment plus r).
   for (int step = 0; step < kMaxTraceSteps; ++step) {
     const Eigen::Vector3d p = a + t * (b - a);
     const double limit = radius_ + (1 - t) * length + kContactTolerance;

@@ -42,13 +42,12 @@ double ClearanceConstraint::evaluate(std::span<const double> values, std::span<d
   std::fill(gradient.begin(), gradient.end(), 0.0);
   const double r = frame_.clearance_radius.value();
   const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
-  const auto nearest = scene_->solid_tree().nearest(camera, r);
+  const auto nearest = scene_->nearest_surface(camera, r);
   if (!nearest) return 0.0;  // nothing within r: satisfied, flat
   const double excess = r - nearest->signed_distance;  // > 0
   const double value = smoothing > 0 ? csp::smooth_hinge(excess, smoothing) : excess;
   const double slope = smoothing > 0 ? csp::smooth_hinge_slope(excess, smoothing) : 1.0;
-  const Eigen::Vector3d g =
-      -slope * signed_distance_gradient(scene_->solid_tree().box(nearest->box), camera);
+  const Eigen::Vector3d g = -slope * nearest->gradient;
   for (int i = 0; i < 3; ++i) gradient[i] = g[i];
   return value;
 }

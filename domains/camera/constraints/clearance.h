@@ -1,15 +1,18 @@
 // ClearanceConstraint: the camera, a sphere of radius r (default 0.2 m, about a near-plane
-// distance), must not touch any solid box, so it never sits in a wall and never sees both
-// sides of one.
+// distance), must not touch any solid box or level triangle, so it never sits in a wall and
+// never sees both sides of one.
 //
-//   violation = max(0, r - d(camera)),   d = signed distance to the nearest solid box
+//   violation = max(0, r - d(camera)),   d = Scene::clearance: signed distance to the
+//                                            nearest solid surface
 //
-// d is negative inside a box (minus the depth to its nearest face), so the violation keeps
+// d is negative inside a box (minus the depth to its nearest face) and inside a level's
+// solid volume (minus the distance to the nearest face), so the violation keeps
 // growing the deeper the camera is inside geometry and search is led back out; it is 0 when
 // the sphere is clear or exactly tangent. The BVH query is bounded by r, so a camera in the
 // open costs little more than the root test. Hard by default. The gradient is exact almost
 // everywhere: -grad d, where grad d is the unit vector from the nearest point of the nearest
-// box (outside) or the outward normal of the nearest face (inside).
+// surface (outside) or the outward normal of the nearest box face (inside a box);
+// Scene::nearest_surface computes both.
 // Scope (cam_x, cam_y, cam_z); radius from the frame parameter clearance_radius.
 #pragma once
 

@@ -137,10 +137,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"BoxUnknownField",
                  with_trajectory("name: x\nboxes:\n  - {min: [0, 0, 0], max: [1, 1, 1], colour: red}\n"),
                  3, "unknown field 'colour'"},
-        BadScene{"DuplicateBoxName",
-                 with_trajectory("name: x\nboxes:\n  - {name: a, min: [5, 0, 0], max: [6, 1, 1]}\n"
-                                 "  - {name: a, min: [7, 0, 0], max: [8, 1, 1]}\n"),
-                 4, "already used at line 3"},
+        BadScene{"LevelNotAMapping", with_trajectory("name: x\nlevel: [a, b]\n"), 2,
+                 "expected a level"},
+        BadScene{"LevelWithoutFile", with_trajectory("name: x\nlevel: {scale: 1}\n"), 2, "file"},
+        BadScene{"LevelFileMissing",
+                 with_trajectory("name: x\nlevel: {file: /nonexistent/level.obj}\n"), 2,
+                 "/nonexistent/level.obj"},
+        BadScene{"LevelBadUpAxis",
+                 with_trajectory("name: x\nlevel: {file: a.obj, up: x}\n"), 2, "y or z"},
+        BadScene{"LevelBadScale",
+                 with_trajectory("name: x\nlevel: {file: a.obj, scale: -1}\n"), 2, "scale"},
+        BadScene{"LevelUnknownField",
+                 with_trajectory("name: x\nlevel: {file: a.obj, colour: red}\n"), 2,
+                 "unknown field 'colour'"},
         BadScene{"UnknownAreaKind",
                  with_trajectory("name: x\nareas:\n  - {name: r, kind: open, min: [0, 0, 0], max: [1, 1, 1]}\n"),
                  3, "enclosed or semi-enclosed"},
@@ -235,6 +244,37 @@ TEST(SceneFile, ShippedScenesAllRead) {
     }
   }
   EXPECT_GE(read, 3);
+}
+
+}  // namespace
+}  // namespace sightline::camera
+
+namespace sightline::camera {
+namespace {
+
+// FORMATS.md: names are labels, not keys. Two boxes (the halves of a wall split by a door)
+// and two areas may share a name; every box still blocks sight.
+TEST(SceneFile, BoxesAndAreasMayShareANameAsFormatsAllows) {
+  const Scene s = parse_scene(csp::parse_yaml(
+      "name: split-wall\n"
+      "boxes:\n"
+      "  - {name: wall, min: [-5, 0, 4], max: [-0.5, 3, 4.2]}\n"
+      "  - {name: wall, min: [0.5, 0, 4], max: [5, 3, 4.2]}\n"
+      "areas:\n"
+      "  - {name: room, kind: enclosed, min: [-5, 0, -5], max: [5, 3, 4]}\n"
+      "  - {name: room, kind: semi-enclosed, min: [-5, 0, 4.2], max: [5, 3, 9]}\n"
+      "trajectory:\n"
+      "  - {t: 0, position: [0, 0, 0], yaw: 0}\n"
+      "  - {t: 1, position: [0, 0, 1], yaw: 0}\n",
+      "scene.yaml"), "");
+  ASSERT_EQ(s.solids().size(), 2u);
+  EXPECT_EQ(s.solids()[0].name, "wall");
+  EXPECT_EQ(s.solids()[1].name, "wall");
+  ASSERT_EQ(s.areas().size(), 2u);
+  // Both halves block; the door between them does not.
+  EXPECT_FALSE(s.line_of_sight({-3, 1, 3}, {-3, 1, 5}));
+  EXPECT_FALSE(s.line_of_sight({3, 1, 3}, {3, 1, 5}));
+  EXPECT_TRUE(s.line_of_sight({0, 1, 3}, {0, 1, 5}));
 }
 
 }  // namespace

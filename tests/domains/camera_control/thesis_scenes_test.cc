@@ -14,6 +14,7 @@
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
 #include "experiments/independent_check.h"
+#include "tests/domains/camera_control/independent_judge.h"
 #include "experiments/scene_files.h"
 
 namespace sightline {
@@ -30,36 +31,6 @@ std::vector<std::string> thesis_scenes() {
 
 std::string scene_path(const std::string& name) {
   return std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/" + name + ".yaml";
-}
-
-// Frames where the independent check sees the look-at hidden, the camera within the
-// clearance radius, or a move longer than smooth motion allows without the cut flag; the
-// first few of each are reported as failures.
-struct Violations {
-  int hidden = 0, too_close = 0, unflagged = 0;
-};
-Violations independent_violations(const camera::Scene& scene,
-                                  const camera::ChaseCameraOptions& options,
-                                  const experiments::CameraRun& run) {
-  const experiments::MetricsInput input =
-      experiments::metrics_input(scene, scene.profile(), options.max_speed / scene.frame_rate());
-  Violations v;
-  for (std::size_t i = 0; i < run.trace.size(); ++i) {
-    const auto& row = run.trace[i];
-    if (experiments::segment_blocked(input.boxes, row.camera, row.target)) {
-      if (v.hidden++ < 5) ADD_FAILURE() << "look-at hidden at frame " << i << " t=" << row.t;
-    }
-    if (experiments::distance_to_geometry(input.boxes, row.camera) <
-        scene.profile().clearance_radius - 1e-6) {
-      if (v.too_close++ < 5) ADD_FAILURE() << "camera within clearance at frame " << i;
-    }
-    if (i > 0 && !row.cut &&
-        (row.camera - run.trace[i - 1].camera).norm() >
-            options.max_speed / scene.frame_rate() + 1e-9) {
-      if (v.unflagged++ < 5) ADD_FAILURE() << "unflagged jump at frame " << i;
-    }
-  }
-  return v;
 }
 
 class OcclusionOctreeOnThesisScene : public ::testing::TestWithParam<std::string> {};

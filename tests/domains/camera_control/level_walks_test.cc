@@ -1,0 +1,65 @@
+// The chase camera on walks through real Quake III maps (experiments/scenes/levels/, made by
+// `sightline level walk` on Debian's OpenArena maps), judged independently: the look-at point
+// visible in every frame, the camera never within its clearance radius of a surface, never
+// inside solid matter or outside the world, every jump flagged as a cut. The judge is
+// independent_judge.h (a brute-force grid of its own over the level's triangles, not Embree),
+// never the controller's own flag.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "domains/camera/scene_file.h"
+#include "experiments/camera_run.h"
+#include "experiments/scene_files.h"
+#include "tests/domains/camera_control/independent_judge.h"
+
+namespace sightline {
+namespace {
+
+const std::string kLevels = std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/levels";
+
+std::vector<std::string> level_walks() {
+  std::vector<std::string> out;
+  if (!std::filesystem::is_directory(kLevels)) return out;
+  for (const std::string& path : experiments::scene_files(kLevels)) {
+    out.push_back(std::filesystem::path(path).stem().string());
+  }
+  return out;
+}
+
+class OcclusionOctreeOnLevelWalk : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(OcclusionOctreeOnLevelWalk, KeepsTheCharacterVisibleAndTheCameraInTheOpenInEveryFrame) {
+  const camera::Scene scene = camera::read_scene_file(kLevels + "/" + GetParam() + ".yaml");
+  ASSERT_NE(scene.level(), nullptr);
+  camera::ChaseCameraOptions options;
+  options.solver = "occlusion-octree";
+  const experiments::CameraRun run = experiments::run_camera(scene, scene.profile(), options);
+  ASSERT_EQ(run.trace.size(), scene.frame_count());
+  const Violations v = independent_violations(scene, options, run);
+  EXPECT_EQ(v.hidden, 0);
+  EXPECT_EQ(v.too_close, 0);
+  EXPECT_EQ(v.in_solid, 0);
+  EXPECT_EQ(v.unflagged, 0);
+  const auto& m = run.metrics;
+  std::printf("%s: %d frames, %d cuts, visible fraction %.2f, distance dev %.2f m, solve p99 %.0f us\n",
+              GetParam().c_str(), m.frames, m.cuts, m.visible_fraction_mean,
+              m.distance_deviation_mean, m.solve_us_p99);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedWalks, OcclusionOctreeOnLevelWalk, ::testing::ValuesIn(level_walks()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(OcclusionOctreeOnLevelWalk);
+
+TEST(LevelWalks, AtLeastThreeAreShipped) { EXPECT_GE(level_walks().size(), 3u); }
+
+}  // namespace
+}  // namespace sightline
