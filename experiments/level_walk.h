@@ -1,13 +1,16 @@
 // Level walks: characters' paths on a real level, made the way a person walks them.
 //
 // `sightline level walk` (apps/level_command.cc) builds a navigation mesh of the level with
-// Recast for a person (WalkOptions: radius, height, step, slope ...), keeps its largest
-// connected region, picks far-apart goals on it, plans between them with Detour, and turns
-// each path into keyframes: walking speeds of 1.5-4 m/s, turning at corners, now and then a
-// stop and a turn on the spot, 40-120 s per walk, every keyframe on the floor. On a game
-// map, the region walked is the one holding the spawn points (a map may have a bigger
-// floor nobody plays on). The same
-// seed gives the same walks. Scene files are written by walk_scene_yaml().
+// Recast for a person (WalkOptions: radius, height, step, slope ...; navigation_mesh.h),
+// keeps one connected region of it (the one holding a game map's spawn points, else the
+// largest), picks far-apart goals on it, plans between them with Detour, and turns each
+// route into keyframes: walking speeds of 1.5-4 m/s, slowing and turning at corners, now
+// and then a stop and a turn on the spot, 40-120 s per walk. The navigation mesh is only
+// Recast's voxel picture of the level, so every keyframe is put on the level's own floor
+// (a ray down into its triangles, floor_probe.h), with the person's headroom, and keyframes
+// are added where the floor changes height (stairs, ramps) until no leg passes through a
+// surface at knee, waist, chest or head height. The same seed gives the same walks. Scene
+// files are written by walk_scene_yaml().
 #pragma once
 
 #include <cstdint>
