@@ -316,6 +316,12 @@ TEST(WalkSceneYaml, TheSameSeedWritesTheSameFilesAndAnotherDoesNot) {
   EXPECT_EQ(first, files(21));
   EXPECT_NE(first, files(22));
   EXPECT_NE(first[0], first[1]) << "walks of one seed differ from each other";
+  WalkOptions one = three_walks(21);
+  one.walks = 1;
+  EXPECT_EQ(walk_scene_yaml("hall-walk", "a walk", "/levels/hall.obj", "",
+                            generate_walks(mesh, one).walks[0]),
+            first[0])
+      << "walk 1 does not depend on how many walks are made";
 }
 
 TEST(WalkSceneYaml, WritesTheSceneFormatWithTheLevelAndEveryKeyframe) {
