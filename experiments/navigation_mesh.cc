@@ -170,6 +170,9 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
         << " (the level: " << nt << " triangles, " << walkable_triangles
         << " of them floors, within " << metres(extent.x()) << " x " << metres(extent.y()) << " x "
         << metres(extent.z()) << " m)";
+    if (walkable_triangles == 0) {
+      out << "; a floor is a triangle facing up, counter-clockwise seen from above";
+    }
     return WalkError(out.str());
   };
   if (cset->nconts == 0) throw no_region("no floor is large enough with room above it");
