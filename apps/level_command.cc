@@ -17,6 +17,7 @@
 #include "apps/commands.h"
 #include "domains/camera/level/level.h"
 #include "experiments/level_walk.h"
+#include "experiments/spawn_points.h"
 
 namespace sightline::apps {
 namespace {
@@ -37,8 +38,27 @@ std::string fixed(double v, int decimals) {
 }
 
 void walk_level(const LevelWalkArgs& args) {
-  if (const std::string bad = args.options.validate(); !bad.empty()) {
-    throw std::invalid_argument("bad walk option: " + bad);
+  if (std::string bad = args.options.validate(); !bad.empty()) {
+    // The field's name as the option is spelled.
+    static const std::pair<const char*, const char*> kOptions[] = {
+        {"agent_radius", "--agent-radius"},
+        {"agent_height", "--agent-height"},
+        {"agent_step", "--agent-step"},
+        {"max_slope_degrees", "--max-slope"},
+        {"cell_size", "--cell-size"},
+        {"cell_height", "--cell-height"},
+        {"min_speed", "--min-speed"},
+        {"max_speed", "--max-speed"},
+        {"min_seconds", "--min-seconds"},
+        {"max_seconds", "--max-seconds"},
+        {"stop_probability", "--stop-probability"},
+        {"turn_rate_degrees", "--turn-rate"},
+        {"walks", "--walks"}};
+    for (const auto& [field, option] : kOptions) {
+      const std::string prefix = std::string(field) + ":";
+      if (bad.rfind(prefix, 0) == 0) bad = option + bad.substr(std::string(field).size());
+    }
+    throw std::invalid_argument(bad);
   }
   camera::LevelSpec spec;
   spec.file = args.file;
@@ -58,13 +78,20 @@ void walk_level(const LevelWalkArgs& args) {
                              (error ? ": " + error.message() : ""));
   }
 
-  const experiments::LevelWalks result = experiments::generate_walks(level.mesh, args.options);
+  const std::vector<Eigen::Vector3d> spawns =
+      experiments::quake3_spawn_points(spec, level.transform);
+  const experiments::LevelWalks result =
+      experiments::generate_walks(level.mesh, args.options, spawns);
   const experiments::NavigationMeshStats& nav = result.navigation;
   std::cout << "Navigation mesh: " << nav.polygons << " polygons, " << nav.region_polygons
-            << " in the largest connected region (" << fixed(nav.region_area, 1) << " of "
+            << " in the connected region walked (" << fixed(nav.region_area, 1) << " of "
             << fixed(nav.walkable_area, 1) << " m^2 walkable), " << nav.grid_width << " x "
             << nav.grid_depth << " cells of " << nav.cell_size << " x " << nav.cell_height
             << " m, built in " << fixed(nav.build_seconds, 2) << " s\n";
+  if (nav.anchors > 0) {
+    std::cout << "  the region walked holds " << nav.region_anchors << " of the map's "
+              << nav.anchors << " spawn points\n";
+  }
   if (!nav.note.empty()) std::cout << "  note: " << nav.note << "\n";
 
   // The level as the scene files name it: as given when absolute (installed maps), else
@@ -84,8 +111,7 @@ void walk_level(const LevelWalkArgs& args) {
     const std::string description =
         "walk " + std::to_string(k + 1) + " of " + std::to_string(n) + " on " + base + ", seed " +
         std::to_string(args.options.seed) + ": " + fixed(walk.length_metres, 1) + " m in " +
-        fixed(seconds, 1) + " s, " + std::to_string(walk.stops) +
-        " stops (sightline level walk)";
+        fixed(seconds, 1) + " s, " + std::to_string(walk.stops) + " stops (sightline level walk)";
     const fs::path file = fs::path(args.out) / (name + ".yaml");
     std::ofstream stream(file, std::ios::binary);
     stream << experiments::walk_scene_yaml(
@@ -103,11 +129,13 @@ void walk_level(const LevelWalkArgs& args) {
 }  // namespace
 
 void add_level_command(CLI::App& app) {
-  CLI::App* level = app.add_subcommand("level", "work with level geometry (Quake III maps, meshes)");
+  CLI::App* level =
+      app.add_subcommand("level", "work with level geometry (Quake III maps, meshes)");
   level->require_subcommand(1);
   CLI::App* walk = level->add_subcommand(
-      "walk", "make walks on a level as a person walks them (Recast/Detour) and write them as "
-              "scene files");
+      "walk",
+      "make walks on a level as a person walks them (Recast/Detour) and write them as "
+      "scene files");
   auto args = std::make_shared<LevelWalkArgs>();
   experiments::WalkOptions& o = args->options;
   walk->add_option("level", args->file, "level file: .pk3, .bsp, or a mesh (glTF, OBJ, ...)")
@@ -121,14 +149,18 @@ void add_level_command(CLI::App& app) {
   walk->add_option("--seed", o.seed, "random seed: the same seed writes the same files")
       ->required();
   walk->add_option("--out", args->out, "folder for the scene files")->required();
-  walk->add_option("--agent-radius", o.agent_radius, "the person's radius, m")->capture_default_str();
-  walk->add_option("--agent-height", o.agent_height, "the person's height, m")->capture_default_str();
+  walk->add_option("--agent-radius", o.agent_radius, "the person's radius, m")
+      ->capture_default_str();
+  walk->add_option("--agent-height", o.agent_height, "the person's height, m")
+      ->capture_default_str();
   walk->add_option("--agent-step", o.agent_step, "the highest step walked up, m")
       ->capture_default_str();
   walk->add_option("--max-slope", o.max_slope_degrees, "the steepest floor walked, degrees")
       ->capture_default_str();
-  walk->add_option("--cell-size", o.cell_size, "Recast's cell size across, m")->capture_default_str();
-  walk->add_option("--cell-height", o.cell_height, "Recast's cell height, m")->capture_default_str();
+  walk->add_option("--cell-size", o.cell_size, "Recast's cell size across, m")
+      ->capture_default_str();
+  walk->add_option("--cell-height", o.cell_height, "Recast's cell height, m")
+      ->capture_default_str();
   walk->add_option("--min-speed", o.min_speed, "slowest walking speed, m/s")->capture_default_str();
   walk->add_option("--max-speed", o.max_speed, "fastest walking speed, m/s")->capture_default_str();
   walk->add_option("--min-seconds", o.min_seconds, "shortest walk, s")->capture_default_str();

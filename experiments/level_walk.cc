@@ -67,8 +67,8 @@ class WalkMaker {
   LevelWalk walk(std::mt19937_64& rng) const;
 
  private:
-  std::optional<std::vector<Straight>> plan(const Eigen::Vector3d& from,
-                                            const std::vector<NavigationMesh::RoutePoint>& route) const;
+  std::optional<std::vector<Straight>> plan_route(
+      const Eigen::Vector3d& from, const std::vector<NavigationMesh::RoutePoint>& route) const;
   std::optional<std::vector<Placed>> straight(const Eigen::Vector3d& from,
                                               const std::vector<NavigationMesh::RoutePoint>& route,
                                               std::size_t a, std::size_t b) const;
@@ -86,8 +86,8 @@ class WalkMaker {
 // and knees to head pass clear of every surface on the way. A riser right next to a sample
 // can make the next sample's leg clip the stair's edge; the one after then serves.
 std::optional<std::vector<Placed>> WalkMaker::straight(
-    const Eigen::Vector3d& from, const std::vector<NavigationMesh::RoutePoint>& route, std::size_t a,
-    std::size_t b) const {
+    const Eigen::Vector3d& from, const std::vector<NavigationMesh::RoutePoint>& route,
+    std::size_t a, std::size_t b) const {
   const Eigen::Vector3d to = route[b].position;
   const double length = horizontal(from, to);
   std::vector<Placed> out;
@@ -120,7 +120,8 @@ std::optional<std::vector<Placed>> WalkMaker::straight(
   std::vector<bool> boundary = {true};
   double previous = from.y() - kFootLift;
   for (std::size_t part = 0; part + 1 < bounds.size(); ++part) {
-    const int n = std::max(1, static_cast<int>(std::ceil((bounds[part + 1] - bounds[part]) / kSample)));
+    const int n =
+        std::max(1, static_cast<int>(std::ceil((bounds[part + 1] - bounds[part]) / kSample)));
     for (int k = 1; k <= n; ++k) {
       const double s = bounds[part] + (bounds[part + 1] - bounds[part]) * k / n;
       const Eigen::Vector3d p = from + (to - from) * (s / length);
@@ -161,7 +162,7 @@ std::optional<std::vector<Placed>> WalkMaker::straight(
   return out;
 }
 
-std::optional<std::vector<Straight>> WalkMaker::plan(
+std::optional<std::vector<Straight>> WalkMaker::plan_route(
     const Eigen::Vector3d& from, const std::vector<NavigationMesh::RoutePoint>& route) const {
   std::vector<Straight> out;
   Eigen::Vector3d feet = from;
@@ -188,8 +189,9 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
     if (start && !probe_.has_headroom(*start)) start.reset();
   }
   if (!start) {
-    throw WalkError("no point of the walkable region has floor under it and headroom above it "
-                    "(the navigation mesh and the level's triangles disagree)");
+    throw WalkError(
+        "no point of the walkable region has floor under it and headroom above it "
+        "(the navigation mesh and the level's triangles disagree)");
   }
   LevelWalk walk;
   std::vector<camera::Keyframe>& keys = walk.keyframes;
@@ -207,7 +209,7 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
                      [](const auto& x, const auto& y) { return x.first > y.first; });
     std::optional<std::vector<Straight>> plan;
     for (const auto& goal : goals) {
-      plan = this->plan(here, goal.second);
+      plan = plan_route(here, goal.second);
       if (plan && !plan->empty()) break;
       plan.reset();
       ++failures;
@@ -228,7 +230,8 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
       } else {
         // The corner: turn towards the next stretch, or stop and turn on the spot.
         turn_here = camera::shortest_turn(yaw, straight.yaw);
-        const double turn_time = std::abs(turn_here) / options_.turn_rate_degrees;
+        // At least 0.02 s: a turn of nothing still takes a keyframe pair apart in time.
+        const double turn_time = std::max(std::abs(turn_here) / options_.turn_rate_degrees, 0.02);
         if (unit(rng) < options_.stop_probability) {
           const double pause = std::max(uniform(rng, 0.5, 2.0), turn_time + 0.05);
           keys.push_back({t + pause - turn_time, here, yaw});
@@ -236,7 +239,7 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
           t += pause;
           ++walk.stops;
         } else if (std::abs(turn_here) > 0.5) {
-          t += std::max(turn_time, 0.02);
+          t += turn_time;
           keys.push_back({t, here, straight.yaw});
         }
       }
@@ -261,7 +264,15 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
   // put back on the floor; if it cannot stand there, the walk ends at a keyframe.
   std::size_t m = 0;
   while (keys[m].t < duration) ++m;
-  if (keys[m].t > duration && m > 0) {
+  // A cut within kMinCut of a keyframe would leave a leg of a few nanoseconds: end there.
+  constexpr double kMinCut = 0.05;
+  const bool near_before = m > 0 && duration - keys[m - 1].t < kMinCut;
+  const bool near_after = keys[m].t - duration < kMinCut;
+  if (near_before && keys[m - 1].t >= options_.min_seconds) {
+    --m;
+  } else if ((near_before || near_after) && keys[m].t <= options_.max_seconds) {
+    // keys[m] ends the walk as it is
+  } else if (keys[m].t > duration && m > 0) {
     const camera::Keyframe& before = keys[m - 1];
     const double f = (duration - before.t) / (keys[m].t - before.t);
     const Eigen::Vector3d p = before.position + f * (keys[m].position - before.position);
@@ -335,18 +346,20 @@ std::string WalkOptions::validate() const {
   return "";
 }
 
-LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options) {
+LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                          const std::vector<Eigen::Vector3d>& anchors) {
   if (const std::string bad = options.validate(); !bad.empty()) throw std::invalid_argument(bad);
   const auto start = std::chrono::steady_clock::now();
   LevelWalks out;
-  const NavigationMesh nav(mesh, options);
+  const NavigationMesh nav(mesh, options, anchors);
   out.navigation = nav.stats();
   const FloorProbe probe(mesh, options.agent_height);
   const WalkMaker maker(nav, probe, options);
   for (int w = 0; w < options.walks; ++w) {
     // Each walk its own stream: walk k is the same whatever the number of walks.
     std::seed_seq seq{static_cast<std::uint32_t>(options.seed),
-                      static_cast<std::uint32_t>(options.seed >> 32), static_cast<std::uint32_t>(w)};
+                      static_cast<std::uint32_t>(options.seed >> 32),
+                      static_cast<std::uint32_t>(w)};
     std::mt19937_64 rng(seq);
     out.walks.push_back(maker.walk(rng));
   }
@@ -368,8 +381,8 @@ std::string walk_scene_yaml(const std::string& name, const std::string& descript
   out << "\ntrajectory:\n";
   for (const camera::Keyframe& k : walk.keyframes) {
     out << "  - {t: " << number(k.t) << ", position: [" << number(k.position.x()) << ", "
-        << number(k.position.y()) << ", " << number(k.position.z())
-        << "], yaw: " << number(k.yaw) << "}\n";
+        << number(k.position.y()) << ", " << number(k.position.z()) << "], yaw: " << number(k.yaw)
+        << "}\n";
   }
   return out.str();
 }

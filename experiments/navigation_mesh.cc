@@ -32,12 +32,14 @@ template <class T, void (*Free)(T*)>
 struct RecastDeleter {
   void operator()(T* p) const { Free(p); }
 };
-using HeightfieldPtr = std::unique_ptr<rcHeightfield, RecastDeleter<rcHeightfield, rcFreeHeightField>>;
-using CompactPtr =
-    std::unique_ptr<rcCompactHeightfield, RecastDeleter<rcCompactHeightfield, rcFreeCompactHeightfield>>;
+using HeightfieldPtr =
+    std::unique_ptr<rcHeightfield, RecastDeleter<rcHeightfield, rcFreeHeightField>>;
+using CompactPtr = std::unique_ptr<rcCompactHeightfield,
+                                   RecastDeleter<rcCompactHeightfield, rcFreeCompactHeightfield>>;
 using ContoursPtr = std::unique_ptr<rcContourSet, RecastDeleter<rcContourSet, rcFreeContourSet>>;
 using PolyMeshPtr = std::unique_ptr<rcPolyMesh, RecastDeleter<rcPolyMesh, rcFreePolyMesh>>;
-using DetailPtr = std::unique_ptr<rcPolyMeshDetail, RecastDeleter<rcPolyMeshDetail, rcFreePolyMeshDetail>>;
+using DetailPtr =
+    std::unique_ptr<rcPolyMeshDetail, RecastDeleter<rcPolyMeshDetail, rcFreePolyMeshDetail>>;
 
 std::string metres(double v) {
   std::ostringstream out;
@@ -56,15 +58,16 @@ struct NavigationMesh::Impl {
   dtNavMesh* nav = nullptr;
   dtNavMeshQuery* query = nullptr;
   dtQueryFilter filter;
-  std::vector<dtPolyRef> region;     // the largest region's polygons
-  std::vector<double> cumulative;    // their areas, summed in order (for drawing points)
+  std::vector<dtPolyRef> region;   // the largest region's polygons
+  std::vector<double> cumulative;  // their areas, summed in order (for drawing points)
   ~Impl() {
     dtFreeNavMeshQuery(query);
     dtFreeNavMesh(nav);
   }
 };
 
-NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options)
+NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                               const std::vector<Eigen::Vector3d>& anchors)
     : impl_(std::make_unique<Impl>()) {
   const auto start = std::chrono::steady_clock::now();
   if (mesh.empty()) throw WalkError("no walkable region: the level has no triangles");
@@ -73,15 +76,16 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
 
   double cs = options.cell_size, ch = options.cell_height;
   std::string note;
-  const double cells = std::ceil(extent.x() / cs + 1) * std::ceil(extent.z() / cs + 1);
+  const double cells = std::ceil(extent.x() / cs + 8) * std::ceil(extent.z() / cs + 8);
   if (cells > kMaxCells) {
-    cs = std::sqrt((extent.x() + cs) * (extent.z() + cs) / kMaxCells) * 1.01;
+    cs = std::sqrt((extent.x() + 8 * cs) * (extent.z() + 8 * cs) / kMaxCells) * 1.01;
     note = "cell size raised from " + metres(options.cell_size) + " to " + metres(cs) +
            " m: the level is " + metres(extent.x()) + " x " + metres(extent.z()) +
            " m, more than one Recast tile of " + metres(kMaxCells) + " cells";
   }
-  if (extent.y() / ch > RC_SPAN_MAX_HEIGHT - 64) {
-    ch = extent.y() / (RC_SPAN_MAX_HEIGHT - 64) * 1.01;
+  const double rise = extent.y() + options.agent_height + 2 * ch;
+  if (rise / ch > RC_SPAN_MAX_HEIGHT - 64) {
+    ch = rise / (RC_SPAN_MAX_HEIGHT - 64) * 1.01;
     note += std::string(note.empty() ? "" : "; ") + "cell height raised from " +
             metres(options.cell_height) + " to " + metres(ch) + " m: the level is " +
             metres(extent.y()) + " m high";
@@ -97,14 +101,17 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   cfg.walkableRadius = static_cast<int>(std::ceil(options.agent_radius / cs));
   cfg.maxEdgeLen = static_cast<int>(12.0 / cs);
   cfg.maxSimplificationError = 1.3f;
-  cfg.minRegionArea = 8 * 8;     // cells: drops specks left by erosion
+  cfg.minRegionArea = 8 * 8;  // cells: drops specks left by erosion
   cfg.mergeRegionArea = 20 * 20;
   cfg.maxVertsPerPoly = 6;
   cfg.detailSampleDist = static_cast<float>(6 * cs);
   cfg.detailSampleMaxError = static_cast<float>(ch);
+  // A margin all round: a level flat along an axis (one wall) still has cells, and the
+  // floor's border cells are never clipped by the bounds.
+  const double margin[3] = {options.agent_radius + 2 * cs, ch, options.agent_radius + 2 * cs};
   for (int i = 0; i < 3; ++i) {
-    cfg.bmin[i] = static_cast<float>(bounds.min[i]);
-    cfg.bmax[i] = static_cast<float>(bounds.max[i]);
+    cfg.bmin[i] = static_cast<float>(bounds.min[i] - margin[i]);
+    cfg.bmax[i] = static_cast<float>(bounds.max[i] + margin[i]);
   }
   // Headroom above the highest floor, so its walkable spans exist.
   cfg.bmax[1] += static_cast<float>(options.agent_height);
@@ -161,8 +168,11 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
         << 2 * options.agent_radius << " m wide, stepping " << options.agent_step
         << " m, on slopes up to " << options.max_slope_degrees << " degrees: " << why
         << " (the level: " << nt << " triangles, " << walkable_triangles
-        << " of them floors, within " << metres(extent.x()) << " x " << metres(extent.y())
-        << " x " << metres(extent.z()) << " m)";
+        << " of them floors, within " << metres(extent.x()) << " x " << metres(extent.y()) << " x "
+        << metres(extent.z()) << " m)";
+    if (walkable_triangles == 0) {
+      out << "; a floor is a triangle facing up, counter-clockwise seen from above";
+    }
     return WalkError(out.str());
   };
   if (cset->nconts == 0) throw no_region("no floor is large enough with room above it");
@@ -252,8 +262,30 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
       }
     }
   }
-  const auto largest = static_cast<int>(
-      std::max_element(component_area.begin(), component_area.end()) - component_area.begin());
+  // The region walked: most anchors on it, then the largest.
+  std::vector<int> anchored(component_area.size(), 0);
+  dtQueryFilter any;
+  any.setIncludeFlags(0xffff);
+  const float reach[3] = {1.0f, 2.5f, 1.0f};  // a spawn point is a player's centre, ~0.75 m up
+  for (const Eigen::Vector3d& a : anchors) {
+    const float p[3] = {static_cast<float>(a.x()), static_cast<float>(a.y()),
+                        static_cast<float>(a.z())};
+    dtPolyRef ref = 0;
+    float nearest[3];
+    if (dtStatusSucceed(impl_->query->findNearestPoly(p, reach, &any, &ref, nearest)) && ref != 0) {
+      ++anchored[static_cast<std::size_t>(component[nav.decodePolyIdPoly(ref)])];
+    }
+  }
+  int largest = 0;
+  for (int c = 1; c < static_cast<int>(component_area.size()); ++c) {
+    const auto k = static_cast<std::size_t>(c), best = static_cast<std::size_t>(largest);
+    if (anchored[k] > anchored[best] ||
+        (anchored[k] == anchored[best] && component_area[k] > component_area[best])) {
+      largest = c;
+    }
+  }
+  stats_.anchors = static_cast<int>(anchors.size());
+  stats_.region_anchors = anchored[static_cast<std::size_t>(largest)];
   const dtPolyRef base = nav.getPolyRefBase(tile);
   double total = 0;
   for (int i = 0; i < npolys; ++i) {
@@ -271,7 +303,7 @@ NavigationMesh::NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptio
   stats_.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (total < kMinRegionArea) {
-    throw no_region("the largest connected floor is only " + metres(total) + " m^2, a walk needs " +
+    throw no_region("the connected floor walked is only " + metres(total) + " m^2, a walk needs " +
                     metres(kMinRegionArea));
   }
 }
@@ -319,7 +351,8 @@ std::vector<NavigationMesh::RoutePoint> NavigationMesh::route(const Eigen::Vecto
   dtPolyRef start = 0, end = 0;
   float sa[3], sb[3];
   const dtNavMeshQuery& q = *impl_->query;
-  if (dtStatusFailed(q.findNearestPoly(a, half, &impl_->filter, &start, sa)) || start == 0) return {};
+  if (dtStatusFailed(q.findNearestPoly(a, half, &impl_->filter, &start, sa)) || start == 0)
+    return {};
   if (dtStatusFailed(q.findNearestPoly(b, half, &impl_->filter, &end, sb)) || end == 0) return {};
   std::vector<dtPolyRef> polys(kMaxRoutePolygons);
   int npolys = 0;
@@ -351,8 +384,7 @@ std::vector<NavigationMesh::RoutePoint> NavigationMesh::route(const Eigen::Vecto
   std::vector<RoutePoint> out;
   std::size_t next_corner = 0;
   for (const Eigen::Vector3d& p : all) {
-    const bool corner =
-        next_corner < corners.size() && (p - corners[next_corner]).norm() < 1e-3;
+    const bool corner = next_corner < corners.size() && (p - corners[next_corner]).norm() < 1e-3;
     if (corner) ++next_corner;
     out.push_back({p, corner});
   }

@@ -33,9 +33,11 @@ class NavigationMesh {
     bool corner = false;  // true at the start, the end and where the direction changes
   };
 
-  // Builds the mesh. Throws WalkError when the level has no walkable region (the message
+  // Builds the mesh; `anchors` (metres, y up, may be empty) choose the region walked.
+  // Throws WalkError when the level has no walkable region (the message
   // says how big the level is and what the person's size is) or Recast fails.
-  NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options);
+  NavigationMesh(const camera::TriangleMesh& mesh, const WalkOptions& options,
+                 const std::vector<Eigen::Vector3d>& anchors = {});
   ~NavigationMesh();
   NavigationMesh(const NavigationMesh&) = delete;
   NavigationMesh& operator=(const NavigationMesh&) = delete;

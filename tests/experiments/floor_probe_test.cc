@@ -97,9 +97,9 @@ TEST(FloorProbe, HeadroomAndBodyLinesSeeACeilingAndABar) {
   EXPECT_FALSE(probe.has_headroom({1, 0, 1}));
   EXPECT_TRUE(probe.has_headroom({3, 0, 1}));
   EXPECT_TRUE(probe.has_headroom({1, 1.75, 1}));
-  EXPECT_FALSE(probe.body_clear({4, 0, 1}, {6, 0, 1}));  // knees and waist hit the wall
+  EXPECT_FALSE(probe.body_clear({4, 0, 1}, {6, 0, 1}));     // knees and waist hit the wall
   EXPECT_TRUE(probe.body_clear({4, 0.9, 1}, {6, 0.9, 1}));  // all lines pass above it
-  EXPECT_TRUE(probe.body_clear({4, 0, 5}, {6, 0, 5}));   // beside it
+  EXPECT_TRUE(probe.body_clear({4, 0, 5}, {6, 0, 5}));      // beside it
 }
 
 }  // namespace

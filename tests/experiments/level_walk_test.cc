@@ -5,17 +5,17 @@
 // the generator's probe, not Recast, not Embree).
 #include "experiments/level_walk.h"
 
-#include <filesystem>
-
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
-
 #include <cmath>
+#include <filesystem>
 #include <string>
 
+#include "csp/files/yaml_spec.h"
 #include "domains/camera/level/level.h"
+#include "domains/camera/scene_file.h"
+#include "experiments/spawn_points.h"
 
 namespace sightline::experiments {
 namespace {
@@ -72,7 +72,8 @@ TriangleMesh stairs_level(double riser) {
   add_floor(mesh, 0, 0, 14, 12, 0);
   add_walls(mesh, 0, 0, 20, 12, 5 * riser + 3);
   add_box(mesh, {14, 0, 0}, {20, 5 * riser, 12});
-  for (int i = 1; i <= 4; ++i) add_box(mesh, {14 - (5 - i) * 0.5, 0, 4}, {14 - (4 - i) * 0.5, i * riser, 8});
+  for (int i = 1; i <= 4; ++i)
+    add_box(mesh, {14 - (5 - i) * 0.5, 0, 4}, {14 - (4 - i) * 0.5, i * riser, 8});
   add_box(mesh, {5, 0, 5}, {6, 4, 6});
   add_box(mesh, {8, 1.5, 2}, {10, 1.7, 10});
   add_box(mesh, {2, 0.45, 8}, {3, 0.6, 12});
@@ -289,8 +290,10 @@ TEST(GenerateWalks, ALevelWithoutWalkableFloorIsReported) {
   add_quad(walls, {2, 0, 0}, {2, 3, 0}, {2, 3, 10}, {2, 0, 10}, Vector3d::UnitX());
   TriangleMesh speck;
   add_floor(speck, 0, 0, 1, 1, 0);
+  TriangleMesh plane;  // one wall, flat along x: no extent across it
+  add_quad(plane, {0, 0, 0}, {0, 3, 0}, {0, 3, 10}, {0, 0, 10}, Vector3d::UnitX());
   TriangleMesh nothing;
-  for (const TriangleMesh* mesh : {&walls, &speck, &nothing}) {
+  for (const TriangleMesh* mesh : {&walls, &speck, &plane, &nothing}) {
     try {
       generate_walks(*mesh, WalkOptions());
       ADD_FAILURE() << "expected WalkError";
@@ -313,6 +316,12 @@ TEST(WalkSceneYaml, TheSameSeedWritesTheSameFilesAndAnotherDoesNot) {
   EXPECT_EQ(first, files(21));
   EXPECT_NE(first, files(22));
   EXPECT_NE(first[0], first[1]) << "walks of one seed differ from each other";
+  WalkOptions one = three_walks(21);
+  one.walks = 1;
+  EXPECT_EQ(walk_scene_yaml("hall-walk", "a walk", "/levels/hall.obj", "",
+                            generate_walks(mesh, one).walks[0]),
+            first[0])
+      << "walk 1 does not depend on how many walks are made";
 }
 
 TEST(WalkSceneYaml, WritesTheSceneFormatWithTheLevelAndEveryKeyframe) {
@@ -321,28 +330,30 @@ TEST(WalkSceneYaml, WritesTheSceneFormatWithTheLevelAndEveryKeyframe) {
   const LevelWalk walk = generate_walks(two_rooms(), options).walks[0];
   const std::string text = walk_scene_yaml("rooms-walk1", "two rooms: \"walk\" 1", "/x/y z.pk3",
                                            "oa_x", walk, 0.03125, camera::UpAxis::kZ);
-  const YAML::Node scene = YAML::Load(text);
-  EXPECT_EQ(scene["name"].as<std::string>(), "rooms-walk1");
-  EXPECT_EQ(scene["description"].as<std::string>(), "two rooms: \"walk\" 1");
-  EXPECT_EQ(scene["level"]["file"].as<std::string>(), "/x/y z.pk3");
-  EXPECT_EQ(scene["level"]["map"].as<std::string>(), "oa_x");
-  EXPECT_EQ(scene["level"]["scale"].as<double>(), 0.03125);
-  EXPECT_EQ(scene["level"]["up"].as<std::string>(), "z");
-  EXPECT_FALSE(scene["boxes"]);
-  const YAML::Node trajectory = scene["trajectory"];
+  const csp::Spec scene = csp::parse_yaml(text, "walk.yaml");
+  EXPECT_EQ(scene.at("name").as_string(), "rooms-walk1");
+  EXPECT_EQ(scene.at("description").as_string(), "two rooms: \"walk\" 1");
+  const csp::Spec& level = scene.at("level");
+  EXPECT_EQ(level.at("file").as_string(), "/x/y z.pk3");
+  EXPECT_EQ(level.at("map").as_string(), "oa_x");
+  EXPECT_EQ(level.at("scale").as_number(), 0.03125);
+  EXPECT_EQ(level.at("up").as_string(), "z");
+  EXPECT_EQ(scene.find("boxes"), nullptr);
+  const std::vector<csp::Spec>& trajectory = scene.at("trajectory").items();
   ASSERT_EQ(trajectory.size(), walk.keyframes.size());
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const auto& k = walk.keyframes[i];
-    EXPECT_NEAR(trajectory[i]["t"].as<double>(), k.t, 5e-7);
-    for (int a = 0; a < 3; ++a) {
-      EXPECT_NEAR(trajectory[i]["position"][a].as<double>(), k.position[a], 5e-7);
-    }
-    EXPECT_NEAR(trajectory[i]["yaw"].as<double>(), k.yaw, 5e-7);
+    EXPECT_NEAR(trajectory[i].at("t").as_number(), k.t, 5e-7);
+    const std::vector<double> position = trajectory[i].at("position").as_numbers();
+    ASSERT_EQ(position.size(), 3u);
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(position[static_cast<std::size_t>(a)], k.position[a], 5e-7);
+    EXPECT_NEAR(trajectory[i].at("yaw").as_number(), k.yaw, 5e-7);
   }
-  const YAML::Node bare = YAML::Load(walk_scene_yaml("w", "", "a.obj", "", walk));
-  EXPECT_FALSE(bare["level"]["map"]);
-  EXPECT_FALSE(bare["level"]["scale"]);
-  EXPECT_FALSE(bare["description"]);
+  const csp::Spec bare = csp::parse_yaml(walk_scene_yaml("w", "", "a.obj", "", walk), "bare.yaml");
+  EXPECT_EQ(bare.at("level").find("map"), nullptr);
+  EXPECT_EQ(bare.at("level").find("scale"), nullptr);
+  EXPECT_EQ(bare.find("description"), nullptr);
 }
 
 // Real levels: Quake III maps from Debian's OpenArena data (skipped where not installed).
@@ -361,19 +372,69 @@ TEST_P(GenerateWalksOnQuake3Map, KeyframesStandOnFloorsWithHeadroomAndLegsClearK
   const camera::Level level = camera::load_level(spec);
   WalkOptions options = three_walks(1);
   options.walks = 2;
-  const LevelWalks result = generate_walks(level.mesh, options);
+  const std::vector<Vector3d> spawns = quake3_spawn_points(spec, level.transform);
+  ASSERT_FALSE(spawns.empty());
+  const LevelWalks result = generate_walks(level.mesh, options, spawns);
   EXPECT_GT(result.navigation.region_area, 100.0);
+  EXPECT_GT(result.navigation.region_anchors, 0);
+  // The arena: within the spawn points' heights, give or take a few storeys (the floors
+  // nobody plays on lie 30 and 100 m below).
+  double low = spawns[0].y(), high = low;
+  for (const Vector3d& s : spawns) low = std::min(low, s.y()), high = std::max(high, s.y());
   for (const LevelWalk& walk : result.walks) {
     expect_walkable(level.mesh, walk);
     expect_person_like(walk, options);
+    for (const auto& k : walk.keyframes) {
+      EXPECT_GT(k.position.y(), low - 15);
+      EXPECT_LT(k.position.y(), high + 15);
+    }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(OpenArena, GenerateWalksOnQuake3Map,
                          ::testing::Values(InstalledMap{"pak6-patch088.pk3", "oa_thor"},
                                            InstalledMap{"pak6-patch088.pk3", "aggressor"},
-                                           InstalledMap{"pak6-patch088.pk3", "am_lavaarena"}),
+                                           InstalledMap{"pak6-patch088.pk3", "am_lavaarena"},
+                                           // A stop with no turn left a keyframe pair 40 ns apart.
+                                           InstalledMap{"pak6-patch085.pk3", "ctf_inyard"},
+                                           // Both have a floor far below the arena,
+                                           // larger than it.
+                                           InstalledMap{"pak6-patch088.pk3", "oa_koth2"},
+                                           InstalledMap{"pak6-patch088.pk3", "czest2ctf"}),
                          [](const auto& info) { return std::string(info.param.map); });
+
+// The walks shipped in experiments/scenes/levels, read back from their files: the same
+// checks, on the installed maps they name.
+TEST(ShippedLevelWalks, StandOnFloorsWithHeadroomAndClearKneesAndChest) {
+  const std::filesystem::path folder =
+      std::filesystem::path(SIGHTLINE_SOURCE_DIR) / "experiments/scenes/levels";
+  for (const char* pk3 : {"pak6-patch085.pk3", "pak6-patch088.pk3"}) {
+    if (!std::filesystem::exists(std::string("/usr/share/games/openarena/baseoa/") + pk3)) {
+      GTEST_SKIP() << pk3 << ", which the shipped walks name, is not installed";
+    }
+  }
+  int walks = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    // The project's own scene reader: the file is a valid scene, its level loads.
+    const camera::Scene scene = camera::read_scene_file(entry.path().string());
+    ASSERT_NE(scene.level(), nullptr);
+    LevelWalk walk;
+    walk.keyframes = scene.trajectory().keyframes();
+    for (std::size_t i = 1; i < walk.keyframes.size(); ++i) {
+      walk.length_metres += (walk.keyframes[i].position - walk.keyframes[i - 1].position).norm();
+    }
+    expect_walkable(scene.level()->mesh, walk);
+    // Six decimals: speeds and the facing are checked on rounded numbers.
+    WalkOptions options;
+    options.max_speed += 1e-3;
+    options.min_speed -= 1e-3;
+    expect_person_like(walk, options);
+    ++walks;
+  }
+  EXPECT_GE(walks, 20);
+}
 
 }  // namespace
 }  // namespace sightline::experiments
