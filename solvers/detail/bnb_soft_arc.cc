@@ -1,0 +1,376 @@
+#include "solvers/detail/bnb_soft_arc.h"
+
+#include <algorithm>
+
+namespace sightline::solvers::detail {
+
+namespace {
+// Steps (queue items processed) one propagate() may take before it stops early; far above
+// what the instances need, it only guards against a propagation that would not settle.
+constexpr std::uint64_t kMaxSteps = 1'000'000;
+}  // namespace
+
+void SoftArcConsistency::load(const WcspView& view, Level level) {
+  view_ = &view;
+  level_ = level;
+  top_ = kForbidden;
+  c0_ = 0;
+  const std::size_t n = view.num_variables();
+  unary_ = view.unary;
+  alive_.assign(view.offset[n], 1);
+  size_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) size_[v] = view.size(static_cast<csp::VariableId>(v));
+  const std::size_t m = view.edges.size();
+  delta_x_.resize(m);
+  delta_y_.resize(m);
+  std::size_t total = 0;
+  neighbours_.assign(n, {});
+  for (std::uint32_t e = 0; e < m; ++e) {
+    const WcspView::Edge& edge = view.edges[e];
+    delta_x_[e] = static_cast<std::uint32_t>(total);
+    total += view.size(edge.x);
+    delta_y_[e] = static_cast<std::uint32_t>(total);
+    total += view.size(edge.y);
+    neighbours_[edge.x].push_back({e, edge.y, true});
+    neighbours_[edge.y].push_back({e, edge.x, false});
+  }
+  deltas_.assign(total, 0);
+  trail_.clear();
+  in_ac_.assign(m, 0);
+  in_dac_.assign(m, 0);
+  in_eac_.assign(n, 0);
+  in_nc_.assign(n, 0);
+  ac_queue_.clear();
+  dac_queue_.clear();
+  eac_queue_.clear();
+  nc_queue_.clear();
+  failed_ = false;
+  last_edge_ = -1;
+  // The first propagate() enforces the level everywhere.
+  for (std::uint32_t e = 0; e < m; ++e) {
+    push_edge(e);
+    if (level_ >= Level::kDirectional) push_dac(e);
+  }
+  for (csp::VariableId v = 0; v < n; ++v) {
+    push_nc(v);
+    if (level_ == Level::kExistential) push_eac(v);
+  }
+}
+
+std::int64_t SoftArcConsistency::cost(std::uint32_t e, std::uint32_t a, std::uint32_t b) const {
+  const WcspView::Edge& edge = view_->edges[e];
+  const std::int64_t m = edge.cost[std::size_t{a} * view_->size(edge.y) + b];
+  if (m >= kForbidden) return kForbidden;
+  return m - deltas_[delta_x_[e] + a] - deltas_[delta_y_[e] + b];
+}
+
+std::int64_t SoftArcConsistency::binary(std::size_t e, std::uint32_t a, std::uint32_t b) const {
+  return cost(static_cast<std::uint32_t>(e), a, b);
+}
+
+void SoftArcConsistency::push_edge(std::uint32_t e) {
+  if (in_ac_[e]) return;
+  in_ac_[e] = 1;
+  ac_queue_.push_back(e);
+}
+void SoftArcConsistency::push_dac(std::uint32_t e) {
+  if (in_dac_[e]) return;
+  in_dac_[e] = 1;
+  dac_queue_.push_back(e);
+}
+void SoftArcConsistency::push_eac(csp::VariableId v) {
+  if (in_eac_[v]) return;
+  in_eac_[v] = 1;
+  eac_queue_.push_back(v);
+}
+void SoftArcConsistency::push_nc(csp::VariableId v) {
+  if (in_nc_[v]) return;
+  in_nc_[v] = 1;
+  nc_queue_.push_back(v);
+}
+
+void SoftArcConsistency::clear_queues() {
+  for (std::uint32_t e : ac_queue_) in_ac_[e] = 0;
+  for (std::uint32_t e : dac_queue_) in_dac_[e] = 0;
+  for (csp::VariableId v : eac_queue_) in_eac_[v] = 0;
+  for (csp::VariableId v : nc_queue_) in_nc_[v] = 0;
+  ac_queue_.clear();
+  dac_queue_.clear();
+  eac_queue_.clear();
+  nc_queue_.clear();
+}
+
+// C_v went up: its own unary support and pruning, full supports of lower neighbours in v,
+// existential supports of v and its neighbours.
+void SoftArcConsistency::unary_increased(csp::VariableId v) {
+  push_nc(v);
+  if (level_ < Level::kDirectional) return;
+  for (const Neighbour& nb : neighbours_[v]) {
+    if (!nb.is_x) push_dac(nb.edge);
+    if (level_ == Level::kExistential) push_eac(nb.other);
+  }
+  if (level_ == Level::kExistential) push_eac(v);
+}
+
+// Costs of edge e went up somewhere (an extension): its simple and full supports.
+void SoftArcConsistency::edge_changed(std::uint32_t e) {
+  if (level_ < Level::kArc) return;
+  push_edge(e);
+  if (level_ < Level::kDirectional) return;
+  push_dac(e);
+  if (level_ == Level::kExistential) {
+    push_eac(view_->edges[e].x);
+    push_eac(view_->edges[e].y);
+  }
+}
+
+void SoftArcConsistency::value_removed(csp::VariableId v) {
+  push_nc(v);
+  for (const Neighbour& nb : neighbours_[v]) {
+    push_edge(nb.edge);  // kNode too: a singleton side is projected
+    if (level_ >= Level::kDirectional && !nb.is_x) push_dac(nb.edge);
+    if (level_ == Level::kExistential) push_eac(nb.other);
+  }
+  if (level_ == Level::kExistential) push_eac(v);
+}
+
+bool SoftArcConsistency::remove(csp::VariableId v, std::uint32_t a) {
+  std::int64_t& flag = alive_[view_->offset[v] + a];
+  if (!flag) return !failed_;
+  set(flag, 0);
+  set(size_[v], size_[v] - 1);
+  if (size_[v] == 0) {
+    failed_ = true;
+    return false;
+  }
+  value_removed(v);
+  return !failed_;
+}
+
+bool SoftArcConsistency::assign(csp::VariableId v, std::uint32_t a) {
+  if (!alive(v, a)) {
+    failed_ = true;
+    return false;
+  }
+  for (std::uint32_t b = 0; b < view_->size(v) && !failed_; ++b) {
+    if (b != a) remove(v, b);
+  }
+  return !failed_;
+}
+
+bool SoftArcConsistency::prune(csp::VariableId v) {
+  const std::uint32_t begin = view_->offset[v];
+  for (std::uint32_t a = 0; a < view_->size(v) && !failed_; ++a) {
+    if (alive_[begin + a] && add_cost(c0_, unary_[begin + a]) >= top_) remove(v, a);
+  }
+  return !failed_;
+}
+
+// NC*: the least unary cost of v moves into c0 (so some value costs 0), then values that
+// reach top with c0 are removed. A raised c0 can prune any variable: the caller rescans.
+bool SoftArcConsistency::node_consistency(csp::VariableId v) {
+  const std::uint32_t begin = view_->offset[v];
+  std::int64_t least = kForbidden;
+  for (std::uint32_t a = 0; a < view_->size(v); ++a) {
+    if (alive_[begin + a]) least = std::min(least, unary_[begin + a]);
+  }
+  if (least >= kForbidden) {
+    failed_ = true;
+    return false;
+  }
+  if (least > 0) {
+    for (std::uint32_t a = 0; a < view_->size(v); ++a) {
+      std::int64_t& u = unary_[begin + a];
+      if (alive_[begin + a] && u < kForbidden) set(u, u - least);
+    }
+    set(c0_, add_cost(c0_, least));
+    if (c0_ >= top_) {
+      failed_ = true;
+      return false;
+    }
+    for (csp::VariableId w = 0; w < size_.size() && !failed_; ++w) prune(w);
+  }
+  return prune(v);
+}
+
+bool SoftArcConsistency::project_simple(std::uint32_t e, bool onto_x) {
+  const WcspView::Edge& edge = view_->edges[e];
+  const csp::VariableId s = onto_x ? edge.x : edge.y, o = onto_x ? edge.y : edge.x;
+  const std::uint32_t ds = view_->size(s), dn = view_->size(o);
+  const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
+  bool moved = false;
+  for (std::uint32_t a = 0; a < ds; ++a) {
+    if (!alive_[sb + a]) continue;
+    std::int64_t least = kForbidden;
+    for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
+      if (alive_[ob + b]) least = std::min(least, onto_x ? cost(e, a, b) : cost(e, b, a));
+    }
+    if (least == 0) continue;
+    moved = true;
+    std::int64_t& u = unary_[sb + a];
+    if (least >= kForbidden) {
+      set(u, kForbidden);  // no allowed pair left: the value goes at the next pruning
+    } else {
+      std::int64_t& d = delta(e, onto_x, a);
+      set(d, d + least);
+      set(u, add_cost(u, least));
+    }
+  }
+  if (moved) {
+    last_edge_ = e;
+    unary_increased(s);
+  }
+  return moved;
+}
+
+bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
+  const WcspView::Edge& edge = view_->edges[e];
+  const csp::VariableId s = onto_x ? edge.x : edge.y, o = onto_x ? edge.y : edge.x;
+  const std::uint32_t ds = view_->size(s), dn = view_->size(o);
+  const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
+  auto pair_cost = [&](std::uint32_t a, std::uint32_t b) {
+    return onto_x ? cost(e, a, b) : cost(e, b, a);
+  };
+  // alpha[a]: the least C(a, b) + C_o(b): what a full support of a lacks.
+  scratch_alpha_.assign(ds, 0);
+  bool lacking = false;
+  for (std::uint32_t a = 0; a < ds; ++a) {
+    if (!alive_[sb + a]) continue;
+    std::int64_t least = kForbidden;
+    for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
+      if (alive_[ob + b]) least = std::min(least, add_cost(pair_cost(a, b), unary_[ob + b]));
+    }
+    scratch_alpha_[a] = least;
+    lacking = lacking || least > 0;
+  }
+  if (!lacking) return false;
+  // Extension: P(b) = max over a of alpha[a] - C(a, b) (at most C_o(b), since alpha[a] <=
+  // C(a, b) + C_o(b)) moves from C_o(b) into column b, so every row a can then give alpha[a].
+  scratch_extend_.assign(dn, 0);
+  for (std::uint32_t b = 0; b < dn; ++b) {
+    if (!alive_[ob + b]) continue;
+    std::int64_t need = 0;
+    for (std::uint32_t a = 0; a < ds; ++a) {
+      if (!alive_[sb + a] || scratch_alpha_[a] == 0 || scratch_alpha_[a] >= kForbidden) continue;
+      const std::int64_t c = pair_cost(a, b);
+      if (c < kForbidden) need = std::max(need, scratch_alpha_[a] - c);
+    }
+    if (need > 0) {
+      std::int64_t& d = delta(e, !onto_x, b);
+      set(d, d - need);
+      set(unary_[ob + b], unary_[ob + b] - need);
+    }
+  }
+  for (std::uint32_t a = 0; a < ds; ++a) {
+    const std::int64_t alpha = scratch_alpha_[a];
+    if (!alive_[sb + a] || alpha == 0) continue;
+    std::int64_t& u = unary_[sb + a];
+    if (alpha >= kForbidden) {
+      set(u, kForbidden);
+    } else {
+      std::int64_t& d = delta(e, onto_x, a);
+      set(d, d + alpha);
+      set(u, add_cost(u, alpha));
+    }
+  }
+  last_edge_ = e;
+  unary_increased(s);
+  edge_changed(e);
+  return true;
+}
+
+void SoftArcConsistency::revise_edge(std::uint32_t e) {
+  const WcspView::Edge& edge = view_->edges[e];
+  if (level_ == Level::kNode) {
+    if (size_[edge.y] == 1) project_simple(e, true);
+    if (size_[edge.x] == 1) project_simple(e, false);
+    return;
+  }
+  project_simple(e, true);
+  project_simple(e, false);
+}
+
+// EAC on v: the least, over alive a, of C_v(a) + sum over pairs of what a's full support
+// lacks; when positive, full supports toward v on every pair make C_v(a) >= it everywhere,
+// and NC* moves it into c0.
+void SoftArcConsistency::revise_existential(csp::VariableId v) {
+  const std::uint32_t vb = view_->offset[v];
+  std::int64_t best = kForbidden;
+  for (std::uint32_t a = 0; a < view_->size(v) && best > 0; ++a) {
+    if (!alive_[vb + a]) continue;
+    std::int64_t sum = unary_[vb + a];
+    for (const Neighbour& nb : neighbours_[v]) {
+      if (sum >= best) break;
+      const std::uint32_t ob = view_->offset[nb.other];
+      std::int64_t least = kForbidden;
+      for (std::uint32_t b = 0; b < view_->size(nb.other) && least > 0; ++b) {
+        if (!alive_[ob + b]) continue;
+        const std::int64_t c = nb.is_x ? cost(nb.edge, a, b) : cost(nb.edge, b, a);
+        least = std::min(least, add_cost(c, unary_[ob + b]));
+      }
+      sum = add_cost(sum, least);
+    }
+    best = std::min(best, sum);
+  }
+  if (best == 0) return;
+  for (const Neighbour& nb : neighbours_[v]) project_full(nb.edge, nb.is_x);
+  push_nc(v);
+}
+
+bool SoftArcConsistency::propagate() {
+  if (failed_ || c0_ >= top_) {
+    clear_queues();
+    failed_ = false;
+    return false;
+  }
+  // top may have dropped since these values were last checked.
+  for (csp::VariableId v = 0; v < size_.size() && !failed_; ++v) prune(v);
+  std::uint64_t steps = 0;
+  while (!failed_ && ++steps <= kMaxSteps) {
+    if (!nc_queue_.empty()) {
+      const csp::VariableId v = nc_queue_.back();
+      nc_queue_.pop_back();
+      in_nc_[v] = 0;
+      node_consistency(v);
+    } else if (!ac_queue_.empty()) {
+      const std::uint32_t e = ac_queue_.back();
+      ac_queue_.pop_back();
+      in_ac_[e] = 0;
+      revise_edge(e);
+    } else if (!dac_queue_.empty()) {
+      const std::uint32_t e = dac_queue_.back();
+      dac_queue_.pop_back();
+      in_dac_[e] = 0;
+      project_full(e, true);  // x < y: costs flow toward the lower id
+    } else if (!eac_queue_.empty()) {
+      const csp::VariableId v = eac_queue_.back();
+      eac_queue_.pop_back();
+      in_eac_[v] = 0;
+      revise_existential(v);
+    } else {
+      break;
+    }
+  }
+  const bool ok = !failed_ && c0_ < top_;
+  clear_queues();
+  failed_ = false;
+  return ok;
+}
+
+void SoftArcConsistency::undo(std::size_t mark) {
+  while (trail_.size() > mark) {
+    *trail_.back().cell = trail_.back().old;
+    trail_.pop_back();
+  }
+}
+
+std::vector<std::int64_t> SoftArcConsistency::snapshot() const {
+  std::vector<std::int64_t> s{c0_};
+  s.insert(s.end(), unary_.begin(), unary_.end());
+  s.insert(s.end(), alive_.begin(), alive_.end());
+  s.insert(s.end(), size_.begin(), size_.end());
+  s.insert(s.end(), deltas_.begin(), deltas_.end());
+  return s;
+}
+
+}  // namespace sightline::solvers::detail

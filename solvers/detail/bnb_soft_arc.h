@@ -1,0 +1,135 @@
+// SoftArcConsistency: the cost state of a weighted CSP (bnb_wcsp_view.h) under search, kept
+// soft arc consistent with equivalence-preserving cost moves, every change trailed so that
+// backtracking restores the exact state. `bnb` reads its lower bound c0 and its unary costs.
+//
+// State: c0 (a cost every completion pays), unary costs C_i(a), binary costs
+// C_ij(a, b) = M_ij(a, b) - dx_ij(a) - dy_ij(b) (the matrix of the view, never written,
+// minus what was projected out of row a onto x, or extended from y's b into column b, as
+// toulbar2 does: a move costs O(d) trailed cells, not O(d^2)), alive flags and domain sizes.
+// Every move keeps the cost of each complete assignment of the current domains exactly
+// (feasible ones; forbidden ones stay >= kForbidden), so c0 never exceeds the optimum of
+// the subproblem. "top" is the pruning threshold: the incumbent's cost (plus one when every
+// optimum must be visited); a value with c0 + C_i(a) >= top is removed, and a state with
+// c0 >= top fails. Hard violations cost kForbidden >= top, so they prune as in classic WCSP
+// with k = top.
+//
+// Levels (Larrosa & Schiex 2004 "Solving weighted CSP by maintaining arc consistency";
+// de Givry, Heras, Zytnicki & Larrosa 2005 "Existential arc consistency: getting closer to
+// full arc consistency in weighted CSPs"), each including the ones before:
+//  - kNode (NC*): c0 + C_i(a) < top for every alive value, and some alive value of every
+//    variable has C_i(a) = 0 (min projected into c0). Pairs with a singleton side are
+//    projected onto the other side (forward checking).
+//  - kArc (AC*): every alive a of x has a simple support b on each C_xy: C_xy(a, b) = 0
+//    (row minima projected onto C_x).
+//  - kDirectional (FDAC*): for x < y every alive a of x has a full support b in y:
+//    C_xy(a, b) + C_y(b) = 0 (unary costs of y extended into C_xy, then projected onto x,
+//    moving costs toward lower ids).
+//  - kExistential (EDAC*): and every variable x has an alive a with C_x(a) = 0 that is fully
+//    supported on every pair at once; where none is, full supports are sought toward x on
+//    all its pairs, which raises c0 by the least sum (the violation of existential AC).
+// Each EAC step raises c0 by at least 1 (integer costs) and FDAC* terminates, so
+// propagation ends; a cap on the steps of one call also bounds it (stopping early keeps
+// the bound valid, only weaker).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "solvers/detail/bnb_wcsp_view.h"
+
+namespace sightline::solvers::detail {
+
+class SoftArcConsistency {
+ public:
+  enum class Level { kNode, kArc, kDirectional, kExistential };
+  static constexpr std::int64_t kForbidden = WcspView::kForbidden;
+
+  // Copies what it needs from `view` (which must outlive this object: its matrices are read).
+  void load(const WcspView& view, Level level);
+  Level level() const { return level_; }
+
+  // The pruning threshold (kForbidden when there is no incumbent). Lowering it is always
+  // valid; the next propagate() prunes with it.
+  void set_top(std::int64_t top) { top_ = top; }
+  std::int64_t top() const { return top_; }
+
+  // Value changes; each is recorded for the next propagate(). False when a domain empties.
+  bool assign(csp::VariableId v, std::uint32_t a);
+  bool remove(csp::VariableId v, std::uint32_t a);
+  // Enforces the level; false when a domain empties or c0 >= top (the state is then
+  // partial and must be undone).
+  bool propagate();
+
+  std::size_t mark() const { return trail_.size(); }
+  void undo(std::size_t mark);
+
+  std::int64_t lower_bound() const { return c0_; }
+  std::size_t num_variables() const { return size_.size(); }
+  std::uint32_t domain_size(csp::VariableId v) const { return view_->size(v); }
+  std::uint32_t alive_count(csp::VariableId v) const { return static_cast<std::uint32_t>(size_[v]); }
+  bool alive(csp::VariableId v, std::uint32_t a) const { return alive_[view_->offset[v] + a] != 0; }
+  std::int64_t unary(csp::VariableId v, std::uint32_t a) const { return unary_[view_->offset[v] + a]; }
+  std::size_t num_edges() const { return view_->edges.size(); }
+  std::int64_t binary(std::size_t e, std::uint32_t a, std::uint32_t b) const;
+  // The edges of v (ids into the view) and the pair variable on each.
+  struct Neighbour {
+    std::uint32_t edge;
+    csp::VariableId other;
+    bool is_x;  // v is the edge's x
+  };
+  const std::vector<Neighbour>& neighbours(csp::VariableId v) const { return neighbours_[v]; }
+  // The edge whose move last changed the state (for dom/wdeg after a failure), or -1.
+  std::int64_t last_edge() const { return last_edge_; }
+  // Every trailed cell, for tests comparing a state before and after undo.
+  std::vector<std::int64_t> snapshot() const;
+
+ private:
+  void set(std::int64_t& cell, std::int64_t value) {
+    trail_.push_back({&cell, cell});
+    cell = value;
+  }
+  std::int64_t& delta(std::uint32_t e, bool x_side, std::uint32_t a) {
+    return deltas_[(x_side ? delta_x_[e] : delta_y_[e]) + a];
+  }
+  std::int64_t cost(std::uint32_t e, std::uint32_t a, std::uint32_t b) const;
+  // Moves the cheapest cost of each alive value row onto that side (AC*'s projection);
+  // returns true when something moved.
+  bool project_simple(std::uint32_t e, bool onto_x);
+  // Full supports toward `onto_x`'s side (extension from the other side, then projection).
+  bool project_full(std::uint32_t e, bool onto_x);
+  void revise_edge(std::uint32_t e);
+  void revise_existential(csp::VariableId v);
+  bool node_consistency(csp::VariableId v);
+  bool prune(csp::VariableId v);
+  void unary_increased(csp::VariableId v);
+  void edge_changed(std::uint32_t e);
+  void value_removed(csp::VariableId v);
+  void push_edge(std::uint32_t e);
+  void push_dac(std::uint32_t e);
+  void push_eac(csp::VariableId v);
+  void push_nc(csp::VariableId v);
+  void clear_queues();
+
+  const WcspView* view_ = nullptr;
+  Level level_ = Level::kExistential;
+  std::int64_t top_ = kForbidden;
+  std::int64_t c0_ = 0;
+  std::vector<std::int64_t> unary_, alive_, size_;
+  std::vector<std::int64_t> deltas_;
+  std::vector<std::uint32_t> delta_x_, delta_y_;  // per edge, into deltas_
+  std::vector<std::vector<Neighbour>> neighbours_;
+  struct Change {
+    std::int64_t* cell;
+    std::int64_t old;
+  };
+  std::vector<Change> trail_;
+  // Work queues with membership flags (not trailed: emptied on failure).
+  std::vector<std::uint32_t> ac_queue_, dac_queue_;
+  std::vector<csp::VariableId> eac_queue_, nc_queue_;
+  std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_;
+  bool failed_ = false;
+  std::int64_t last_edge_ = -1;
+  std::vector<std::int64_t> scratch_alpha_, scratch_extend_;
+};
+
+}  // namespace sightline::solvers::detail
