@@ -35,6 +35,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
     neighbours_[edge.y].push_back({e, edge.x, false});
   }
   deltas_.assign(total, 0);
+  support_.assign(total, 0);
   trail_.clear();
   in_ac_.assign(m, 0);
   in_dac_.assign(m, 0);
@@ -55,13 +56,6 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
     push_nc(v);
     if (level_ == Level::kExistential) push_eac(v);
   }
-}
-
-std::int64_t SoftArcConsistency::cost(std::uint32_t e, std::uint32_t a, std::uint32_t b) const {
-  const WcspView::Edge& edge = view_->edges[e];
-  const std::int64_t m = edge.cost[std::size_t{a} * view_->size(edge.y) + b];
-  if (m >= kForbidden) return kForbidden;
-  return m - deltas_[delta_x_[e] + a] - deltas_[delta_y_[e] + b];
 }
 
 std::int64_t SoftArcConsistency::binary(std::size_t e, std::uint32_t a, std::uint32_t b) const {
@@ -199,11 +193,19 @@ bool SoftArcConsistency::project_simple(std::uint32_t e, bool onto_x) {
   const std::uint32_t ds = view_->size(s), dn = view_->size(o);
   const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
   bool moved = false;
+  std::uint32_t* support = support_.data() + (onto_x ? delta_x_[e] : delta_y_[e]);
   for (std::uint32_t a = 0; a < ds; ++a) {
     if (!alive_[sb + a]) continue;
+    const std::uint32_t hint = support[a];
+    if (alive_[ob + hint] && (onto_x ? cost(e, a, hint) : cost(e, hint, a)) == 0) continue;
     std::int64_t least = kForbidden;
     for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
-      if (alive_[ob + b]) least = std::min(least, onto_x ? cost(e, a, b) : cost(e, b, a));
+      if (!alive_[ob + b]) continue;
+      const std::int64_t c = onto_x ? cost(e, a, b) : cost(e, b, a);
+      if (c < least) {
+        least = c;
+        support[a] = b;
+      }
     }
     if (least == 0) continue;
     moved = true;

@@ -91,7 +91,12 @@ class SoftArcConsistency {
   std::int64_t& delta(std::uint32_t e, bool x_side, std::uint32_t a) {
     return deltas_[(x_side ? delta_x_[e] : delta_y_[e]) + a];
   }
-  std::int64_t cost(std::uint32_t e, std::uint32_t a, std::uint32_t b) const;
+  std::int64_t cost(std::uint32_t e, std::uint32_t a, std::uint32_t b) const {
+    const WcspView::Edge& edge = view_->edges[e];
+    const std::int64_t m = edge.cost[std::size_t{a} * view_->size(edge.y) + b];
+    if (m >= kForbidden) return kForbidden;
+    return m - deltas_[delta_x_[e] + a] - deltas_[delta_y_[e] + b];
+  }
   // Moves the cheapest cost of each alive value row onto that side (AC*'s projection);
   // returns true when something moved.
   bool project_simple(std::uint32_t e, bool onto_x);
@@ -117,6 +122,10 @@ class SoftArcConsistency {
   std::vector<std::int64_t> unary_, alive_, size_;
   std::vector<std::int64_t> deltas_;
   std::vector<std::uint32_t> delta_x_, delta_y_;  // per edge, into deltas_
+  // Last simple support found per (edge, side, value), laid out as deltas_: a hint, not
+  // trailed (checked before use: alive and of zero cost), so AC* rescans a row only when
+  // its support has gone.
+  std::vector<std::uint32_t> support_;
   std::vector<std::vector<Neighbour>> neighbours_;
   struct Change {
     std::int64_t* cell;
