@@ -36,6 +36,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   }
   deltas_.assign(total, 0);
   support_.assign(total, 0);
+  full_support_.assign(total, 0);
   trail_.clear();
   in_ac_.assign(m, 0);
   in_dac_.assign(m, 0);
@@ -236,11 +237,19 @@ bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   // alpha[a]: the least C(a, b) + C_o(b): what a full support of a lacks.
   scratch_alpha_.assign(ds, 0);
   bool lacking = false;
+  std::uint32_t* support = full_support_.data() + (onto_x ? delta_x_[e] : delta_y_[e]);
   for (std::uint32_t a = 0; a < ds; ++a) {
     if (!alive_[sb + a]) continue;
+    const std::uint32_t hint = support[a];
+    if (alive_[ob + hint] && pair_cost(a, hint) == 0 && unary_[ob + hint] == 0) continue;
     std::int64_t least = kForbidden;
     for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
-      if (alive_[ob + b]) least = std::min(least, add_cost(pair_cost(a, b), unary_[ob + b]));
+      if (!alive_[ob + b]) continue;
+      const std::int64_t c = add_cost(pair_cost(a, b), unary_[ob + b]);
+      if (c < least) {
+        least = c;
+        support[a] = b;
+      }
     }
     scratch_alpha_[a] = least;
     lacking = lacking || least > 0;
@@ -296,9 +305,9 @@ void SoftArcConsistency::revise_edge(std::uint32_t e) {
 // lacks; when positive, full supports toward v on every pair make C_v(a) >= it everywhere,
 // and NC* moves it into c0.
 void SoftArcConsistency::revise_existential(csp::VariableId v) {
-  const std::uint32_t vb = view_->offset[v];
+  const std::uint32_t vb = view_->offset[v], dv = view_->size(v);
   std::int64_t best = kForbidden;
-  for (std::uint32_t a = 0; a < view_->size(v) && best > 0; ++a) {
+  for (std::uint32_t a = 0; a < dv && best > 0; ++a) {
     if (!alive_[vb + a]) continue;
     std::int64_t sum = unary_[vb + a];
     for (const Neighbour& nb : neighbours_[v]) {

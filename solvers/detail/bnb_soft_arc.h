@@ -126,6 +126,8 @@ class SoftArcConsistency {
   // trailed (checked before use: alive and of zero cost), so AC* rescans a row only when
   // its support has gone.
   std::vector<std::uint32_t> support_;
+  // The same for full supports (toward x when x < y, or toward an EAC variable).
+  std::vector<std::uint32_t> full_support_;
   std::vector<std::vector<Neighbour>> neighbours_;
   struct Change {
     std::int64_t* cell;
