@@ -8,6 +8,8 @@ namespace {
 // Steps (queue items processed) one propagate() may take before it stops early; far above
 // what the instances need, it only guards against a propagation that would not settle.
 constexpr std::uint64_t kMaxSteps = 1'000'000;
+// Steps between two asks of the stop check.
+constexpr std::uint64_t kStopStride = 64;
 }  // namespace
 
 void SoftArcConsistency::load(const WcspView& view, Level level) {
@@ -47,6 +49,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   eac_queue_.clear();
   nc_queue_.clear();
   failed_ = false;
+  stopped_ = false;
   last_edge_ = -1;
   // The first propagate() enforces the level everywhere.
   for (std::uint32_t e = 0; e < m; ++e) {
@@ -338,6 +341,10 @@ bool SoftArcConsistency::propagate() {
   for (csp::VariableId v = 0; v < size_.size() && !failed_; ++v) prune(v);
   std::uint64_t steps = 0;
   while (!failed_ && ++steps <= kMaxSteps) {
+    if (steps % kStopStride == 0 && stop_ && stop_()) {
+      stopped_ = failed_ = true;
+      break;
+    }
     if (!nc_queue_.empty()) {
       const csp::VariableId v = nc_queue_.back();
       nc_queue_.pop_back();

@@ -33,6 +33,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "solvers/detail/bnb_wcsp_view.h"
@@ -57,8 +58,11 @@ class SoftArcConsistency {
   bool assign(csp::VariableId v, std::uint32_t a);
   bool remove(csp::VariableId v, std::uint32_t a);
   // Enforces the level; false when a domain empties or c0 >= top (the state is then
-  // partial and must be undone).
+  // partial and must be undone), or when `stop` (if set) said so: a limit must hold inside
+  // one long propagation too (a root over large domains); stopped() then tells.
   bool propagate();
+  void set_stop_check(std::function<bool()> stop) { stop_ = std::move(stop); }
+  bool stopped() const { return stopped_; }
 
   std::size_t mark() const { return trail_.size(); }
   void undo(std::size_t mark);
@@ -139,6 +143,8 @@ class SoftArcConsistency {
   std::vector<csp::VariableId> eac_queue_, nc_queue_;
   std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_;
   bool failed_ = false;
+  bool stopped_ = false;
+  std::function<bool()> stop_;
   std::int64_t last_edge_ = -1;
   std::vector<std::int64_t> scratch_alpha_, scratch_extend_;
 };

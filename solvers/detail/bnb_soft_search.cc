@@ -93,7 +93,13 @@ void SoftArcSearch::search() {
     ++nodes_;
     state_.set_top(top());
     const bool ok = branch == 0 ? state_.assign(x, a) : state_.remove(x, a);
-    if (ok && state_.propagate()) {
+    const bool consistent = ok && state_.propagate();
+    if (state_.stopped()) {
+      stopped_ = true;
+      state_.undo(mark);
+      return;
+    }
+    if (consistent) {
       if (branch == 0 && conflict_ == x) conflict_ = kNone;
       search();
     } else {
@@ -132,8 +138,10 @@ void SoftArcSearch::run(const csp::Problem& problem, const WcspView& view,
       optimal_count_ = 0;  // the search visits the start again if it is optimal
     }
   }
+  state_.set_stop_check([this] { return budget_->exhausted(full_evaluations_, nodes_); });
   state_.set_top(top());
   const bool root_ok = state_.propagate();
+  stopped_ = state_.stopped();
   const std::int64_t root_bound = state_.lower_bound();
   if (root_ok) search();
 

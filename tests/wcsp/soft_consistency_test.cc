@@ -286,6 +286,25 @@ TEST(SoftArcConsistency, NonBinaryOrNonIntegerProblemsFallBackToForwardChecking)
   EXPECT_THROW(SolverRegistry::global().create("bnb", {{"consistency", "vac"}}), OptionError);
 }
 
+TEST(SoftArcConsistency, PropagationStopsWhenTheStopCheckSaysSo) {
+  const auto problem = csp::read_wcsp_file(std::string(SIGHTLINE_SHARED_DIR) +
+                                           "/data/wcsp/celar7sub0.wcsp.gz");
+  const detail::WcspView view = view_of(*problem);
+  SoftArcConsistency s;
+  s.load(view, Level::kExistential);
+  int asked = 0;
+  s.set_stop_check([&] { return ++asked >= 2; });
+  EXPECT_FALSE(s.propagate());
+  EXPECT_TRUE(s.stopped());
+  EXPECT_EQ(asked, 2);
+  // Without the stop the same root propagates (the optimum is 10310).
+  s.set_stop_check(nullptr);
+  s.load(view, Level::kExistential);
+  EXPECT_TRUE(s.propagate());
+  EXPECT_FALSE(s.stopped());
+  EXPECT_LE(s.lower_bound(), 10310);
+}
+
 const std::string kDataDir = std::string(SIGHTLINE_SHARED_DIR) + "/data/wcsp/";
 
 class BinaryWcspInstance : public ::testing::TestWithParam<std::string> {};
