@@ -1,6 +1,7 @@
 #include "solvers/detail/bnb_soft_arc.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sightline::solvers::detail {
 
@@ -37,6 +38,16 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
     neighbours_[edge.y].push_back({e, edge.x, false});
   }
   deltas_.assign(total, 0);
+  const std::size_t k = view.nary.size();
+  nary_of_.assign(n, {});
+  for (std::uint32_t i = 0; i < k; ++i) {
+    for (csp::VariableId v : view.problem->constraint(view.nary[i]).scope()) nary_of_[v].push_back(i);
+  }
+  nary_done_.assign(k, 0);
+  in_nary_.assign(k, 0);
+  nary_queue_.clear();
+  values_.assign(n, 0.0);
+  assigned_.assign(n, 0);
   support_.assign(total, 0);
   full_support_.assign(total, 0);
   trail_.clear();
@@ -55,6 +66,10 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   for (std::uint32_t e = 0; e < m; ++e) {
     push_edge(e);
     if (level_ >= Level::kDirectional) push_dac(e);
+  }
+  for (std::uint32_t i = 0; i < k; ++i) {
+    in_nary_[i] = 1;
+    nary_queue_.push_back(i);
   }
   for (csp::VariableId v = 0; v < n; ++v) {
     push_nc(v);
@@ -92,10 +107,12 @@ void SoftArcConsistency::clear_queues() {
   for (std::uint32_t e : dac_queue_) in_dac_[e] = 0;
   for (csp::VariableId v : eac_queue_) in_eac_[v] = 0;
   for (csp::VariableId v : nc_queue_) in_nc_[v] = 0;
+  for (std::uint32_t i : nary_queue_) in_nary_[i] = 0;
   ac_queue_.clear();
   dac_queue_.clear();
   eac_queue_.clear();
   nc_queue_.clear();
+  nary_queue_.clear();
 }
 
 // C_v went up: its own unary support and pruning, full supports of lower neighbours in v,
@@ -142,6 +159,14 @@ bool SoftArcConsistency::remove(csp::VariableId v, std::uint32_t a) {
     return false;
   }
   value_removed(v);
+  if (size_[v] == 1) {
+    for (std::uint32_t i : nary_of_[v]) {
+      if (!in_nary_[i] && !nary_done_[i]) {
+        in_nary_[i] = 1;
+        nary_queue_.push_back(i);
+      }
+    }
+  }
   return !failed_;
 }
 
@@ -331,6 +356,70 @@ void SoftArcConsistency::revise_existential(csp::VariableId v) {
   push_nc(v);
 }
 
+std::size_t SoftArcConsistency::open_nary(csp::VariableId v) const {
+  std::size_t open = 0;
+  for (std::uint32_t i : nary_of_[v]) open += nary_done_[i] == 0;
+  return open;
+}
+
+// The weighted cost of an n-ary constraint at values_ (integral: checked by the view).
+std::int64_t SoftArcConsistency::nary_cost(const csp::Constraint& con) const {
+  const double violation = con.violation(values_);
+  if (con.is_hard()) return violation > 0 ? kForbidden : 0;
+  return static_cast<std::int64_t>(std::llround(con.weight() * violation));
+}
+
+void SoftArcConsistency::revise_nary(std::uint32_t k) {
+  if (nary_done_[k]) return;
+  const csp::Constraint& con = view_->problem->constraint(view_->nary[k]);
+  const auto scope = con.scope();
+  std::size_t unfixed = 0;
+  csp::VariableId last = 0;
+  for (csp::VariableId u : scope) {
+    const std::uint32_t ub = view_->offset[u];
+    if (size_[u] == 1) {
+      for (std::uint32_t a = 0; a < view_->size(u); ++a) {
+        if (alive_[ub + a]) values_[u] = view_->values[ub + a];
+      }
+      assigned_[u] = 1;
+    } else {
+      ++unfixed;
+      last = u;
+    }
+  }
+  if (unfixed == 0) {  // the whole constraint into c0
+    set(nary_done_[k], 1);
+    set(c0_, add_cost(c0_, nary_cost(con)));
+    if (c0_ >= top_) failed_ = true;
+    for (csp::VariableId w = 0; w < size_.size() && !failed_; ++w) prune(w);
+  } else if (unfixed == 1) {  // onto the last variable's unary costs
+    set(nary_done_[k], 1);
+    const std::uint32_t lb = view_->offset[last];
+    for (std::uint32_t b = 0; b < view_->size(last); ++b) {
+      if (!alive_[lb + b]) continue;
+      values_[last] = view_->values[lb + b];
+      const std::int64_t c = nary_cost(con);
+      if (c > 0) set(unary_[lb + b], add_cost(unary_[lb + b], c));
+    }
+    unary_increased(last);
+  } else if (con.is_hard()) {  // forward checking
+    if (con.min_violation(values_, assigned_) > 0) failed_ = true;
+    for (std::size_t p = 0; p < scope.size() && !failed_; ++p) {
+      const csp::VariableId u = scope[p];
+      if (assigned_[u]) continue;
+      const std::uint32_t ub = view_->offset[u];
+      assigned_[u] = 1;
+      for (std::uint32_t b = 0; b < view_->size(u) && !failed_; ++b) {
+        if (!alive_[ub + b]) continue;
+        values_[u] = view_->values[ub + b];
+        if (con.min_violation(values_, assigned_) > 0) remove(u, b);
+      }
+      assigned_[u] = 0;
+    }
+  }
+  for (csp::VariableId u : scope) assigned_[u] = 0;
+}
+
 bool SoftArcConsistency::propagate() {
   if (failed_ || c0_ >= top_) {
     clear_queues();
@@ -350,6 +439,11 @@ bool SoftArcConsistency::propagate() {
       nc_queue_.pop_back();
       in_nc_[v] = 0;
       node_consistency(v);
+    } else if (!nary_queue_.empty()) {
+      const std::uint32_t i = nary_queue_.back();
+      nary_queue_.pop_back();
+      in_nary_[i] = 0;
+      revise_nary(i);
     } else if (!ac_queue_.empty()) {
       const std::uint32_t e = ac_queue_.back();
       ac_queue_.pop_back();
@@ -388,6 +482,7 @@ std::vector<std::int64_t> SoftArcConsistency::snapshot() const {
   s.insert(s.end(), alive_.begin(), alive_.end());
   s.insert(s.end(), size_.begin(), size_.end());
   s.insert(s.end(), deltas_.begin(), deltas_.end());
+  s.insert(s.end(), nary_done_.begin(), nary_done_.end());
   return s;
 }
 

@@ -27,6 +27,10 @@
 //  - kExistential (EDAC*): and every variable x has an alive a with C_x(a) = 0 that is fully
 //    supported on every pair at once; where none is, full supports are sought toward x on
 //    all its pairs, which raises c0 by the least sum (the violation of existential AC).
+// Constraints of arity >= 3 (tables and all_differents with integer costs) are not
+// projected while two or more of their variables are unfixed: a hard one is then forward
+// checked (a value goes when min_violation with it is positive), and any of them is moved
+// whole onto its last unfixed variable's unary costs (or into c0) once the others are fixed.
 // Each EAC step raises c0 by at least 1 (integer costs) and FDAC* terminates, so
 // propagation ends; a cap on the steps of one call also bounds it (stopping early keeps
 // the bound valid, only weaker).
@@ -82,6 +86,8 @@ class SoftArcConsistency {
     bool is_x;  // v is the edge's x
   };
   const std::vector<Neighbour>& neighbours(csp::VariableId v) const { return neighbours_[v]; }
+  // How many constraints of arity >= 3 on v are not yet projected.
+  std::size_t open_nary(csp::VariableId v) const;
   // The edge whose move last changed the state (for dom/wdeg after a failure), or -1.
   std::int64_t last_edge() const { return last_edge_; }
   // Every trailed cell, for tests comparing a state before and after undo.
@@ -108,6 +114,8 @@ class SoftArcConsistency {
   bool project_full(std::uint32_t e, bool onto_x);
   void revise_edge(std::uint32_t e);
   void revise_existential(csp::VariableId v);
+  void revise_nary(std::uint32_t k);
+  std::int64_t nary_cost(const csp::Constraint& con) const;
   bool node_consistency(csp::VariableId v);
   bool prune(csp::VariableId v);
   void unary_increased(csp::VariableId v);
@@ -141,7 +149,14 @@ class SoftArcConsistency {
   // Work queues with membership flags (not trailed: emptied on failure).
   std::vector<std::uint32_t> ac_queue_, dac_queue_;
   std::vector<csp::VariableId> eac_queue_, nc_queue_;
-  std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_;
+  std::vector<std::uint32_t> nary_queue_;
+  std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_, in_nary_;
+  // Constraints of arity >= 3: per variable, its entries of view.nary; per entry, 1 once
+  // projected (trailed); scratch values and assigned flags for violation/min_violation.
+  std::vector<std::vector<std::uint32_t>> nary_of_;
+  std::vector<std::int64_t> nary_done_;
+  std::vector<double> values_;
+  std::vector<std::uint8_t> assigned_;
   bool failed_ = false;
   bool stopped_ = false;
   std::function<bool()> stop_;

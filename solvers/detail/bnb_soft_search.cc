@@ -31,7 +31,7 @@ csp::VariableId SoftArcSearch::select_variable() const {
   for (csp::VariableId v = 0; v < state_.num_variables(); ++v) {
     const std::uint64_t size = state_.alive_count(v);
     if (size <= 1) continue;
-    std::uint64_t weight = 1;
+    std::uint64_t weight = 1 + state_.open_nary(v);
     for (const auto& nb : state_.neighbours(v)) {
       if (state_.alive_count(nb.other) > 1) weight += weight_[nb.edge];
     }

@@ -5,9 +5,40 @@
 #include <map>
 #include <utility>
 
+#include "csp/kinds/all_different.h"
+#include "csp/kinds/table.h"
+
 namespace sightline::solvers::detail {
 
 namespace {
+
+bool integral(double cost) {
+  return std::isfinite(cost) && cost >= 0 && cost == std::floor(cost) &&
+         cost < static_cast<double>(WcspView::kSoftCap);
+}
+
+// An n-ary constraint the consistency can carry: its weighted costs are all integers.
+// Returns its largest weighted cost (0 for a hard one), or -1 when it cannot be carried.
+double nary_largest_cost(const csp::Constraint& con) {
+  if (const auto* table = dynamic_cast<const csp::Table*>(&con)) {
+    if (con.is_hard()) return 0;
+    double largest = con.weight() * table->default_cost();
+    if (!integral(largest)) return -1;
+    for (std::size_t i = 0; i < table->num_tuples(); ++i) {
+      const double c = con.weight() * table->tuple_cost(i);
+      if (!integral(c)) return -1;
+      largest = std::max(largest, c);
+    }
+    return largest;
+  }
+  if (dynamic_cast<const csp::AllDifferent*>(&con)) {
+    if (con.is_hard()) return 0;
+    // Violation: a count of repeated variables or of equal pairs, at most k^2.
+    const double k = static_cast<double>(con.scope().size());
+    return integral(con.weight()) ? con.weight() * k * k : -1;
+  }
+  return -1;
+}
 
 std::pair<csp::VariableId, csp::VariableId> ordered(csp::VariableId a, csp::VariableId b) {
   return a < b ? std::pair{a, b} : std::pair{b, a};
@@ -34,13 +65,21 @@ std::string build_wcsp_view(const csp::Problem& problem, WcspView& view) {
   }
   view.unary.assign(view.offset[n], 0);
   view.edges.clear();
+  view.nary.clear();
+  view.problem = &problem;
 
   // Checks first (cheap), so a problem that falls back allocates no matrix.
   std::map<std::pair<csp::VariableId, csp::VariableId>, std::size_t> edge_of;
   std::uint64_t entries = 0;
   for (csp::ConstraintId c = 0; c < problem.num_constraints(); ++c) {
     const auto scope = problem.constraint(c).scope();
-    if (scope.size() > 2) return "a constraint has arity " + std::to_string(scope.size()) + " > 2";
+    if (scope.size() > 2) {
+      if (nary_largest_cost(problem.constraint(c)) < 0) {
+        return "a constraint of arity " + std::to_string(scope.size()) +
+               " is neither a table nor an all_different with integer costs";
+      }
+      view.nary.push_back(c);
+    }
     if (scope.size() == 2) {
       const auto key = ordered(scope[0], scope[1]);
       if (edge_of.emplace(key, edge_of.size()).second) {
@@ -76,7 +115,9 @@ std::string build_wcsp_view(const csp::Problem& problem, WcspView& view) {
     const csp::Constraint& con = problem.constraint(c);
     const auto scope = con.scope();
     double largest = 0;
-    if (scope.size() == 1) {
+    if (scope.size() > 2) {
+      largest = nary_largest_cost(con);
+    } else if (scope.size() == 1) {
       const csp::VariableId v = scope[0];
       for (std::uint32_t a = 0; a < view.size(v); ++a) {
         values[v] = view.values[view.offset[v] + a];

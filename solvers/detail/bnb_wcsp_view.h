@@ -4,11 +4,14 @@
 // (bnb_soft_arc.h) works on: projections and extensions move integer costs between these
 // arrays exactly, with no round-off.
 //
-// Built when every constraint has arity 1 or 2 (any kind: its matrix is read through
-// violation(), so tables, not_equal, ... all qualify), every weighted soft cost is an
-// integer, and the matrices fit the memory caps below. Otherwise `build_wcsp_view` says
-// why and `bnb` falls back to forward checking (bnb_search.h): soundness before speed, so an
-// n-ary constraint is never half-projected here.
+// Built when every constraint of arity 1 or 2 (any kind: its matrix is read through
+// violation(), so tables, not_equal, ... all qualify) has integer weighted costs, every
+// constraint of arity >= 3 is a table with integer weighted costs or an all_different with
+// an integer weight, and the matrices fit the memory caps below. Otherwise
+// `build_wcsp_view` says why and `bnb` falls back to forward checking (bnb_search.h).
+// Constraints of arity >= 3 are listed, not projected (soundness before speed): the
+// consistency checks a hard one by forward checking (min_violation) and projects any of
+// them onto its last unfixed variable only.
 //
 // Costs: a soft constraint adds weight x violation; a hard one adds kForbidden where its
 // violation is positive. Several constraints on the same pair (or variable) are summed into
@@ -41,6 +44,8 @@ struct WcspView {
   std::vector<double> values;         // per slot: the domain value
   std::vector<std::int64_t> unary;    // per slot
   std::vector<Edge> edges;
+  std::vector<csp::ConstraintId> nary;  // constraints of arity >= 3
+  const csp::Problem* problem = nullptr;
 };
 
 // Saturating sum of two costs in [0, kForbidden].
