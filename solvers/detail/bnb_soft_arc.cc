@@ -411,6 +411,12 @@ void SoftArcConsistency::revise_nary(std::uint32_t k) {
       assigned_[u] = 1;
       for (std::uint32_t b = 0; b < view_->size(u) && !failed_; ++b) {
         if (!alive_[ub + b]) continue;
+        // One wide constraint can take long (800 queens: 640,000 checks of 800 values):
+        // the stop check is asked here too.
+        if (++checks_ % kStopStride == 0 && stop_ && stop_()) {
+          stopped_ = failed_ = true;
+          break;
+        }
         values_[u] = view_->values[ub + b];
         if (con.min_violation(values_, assigned_) > 0) remove(u, b);
       }

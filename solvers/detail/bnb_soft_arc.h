@@ -159,6 +159,7 @@ class SoftArcConsistency {
   std::vector<std::uint8_t> assigned_;
   bool failed_ = false;
   bool stopped_ = false;
+  std::uint64_t checks_ = 0;  // n-ary forward checks, for the stop check
   std::function<bool()> stop_;
   std::int64_t last_edge_ = -1;
   std::vector<std::int64_t> scratch_alpha_, scratch_extend_;
