@@ -14,7 +14,7 @@ const OptionSchema<BranchAndBoundSolver::Options>& BranchAndBoundSolver::Options
           .boolean("use_start_bound", &Options::use_start_bound,
                    "start from the start assignment's cost as upper bound when it is feasible")
           .text("consistency", &Options::consistency,
-                "soft arc consistency on binary integer-cost WCSPs: none, nc, ac, fdac, edac")
+                "soft arc consistency on integer-cost WCSPs: none, nc, ac, fdac, edac")
           .boolean("last_conflict", &Options::last_conflict,
                    "with soft arc consistency, branch again on the last failed variable");
   return s;
