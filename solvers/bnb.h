@@ -65,7 +65,7 @@ namespace detail {
 class BranchAndBoundSearch;
 class SoftArcSearch;
 struct WcspView;
-}
+}  // namespace detail
 
 class BranchAndBoundSolver : public Solver {
  public:

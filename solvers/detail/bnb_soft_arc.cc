@@ -41,7 +41,8 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   const std::size_t k = view.nary.size();
   nary_of_.assign(n, {});
   for (std::uint32_t i = 0; i < k; ++i) {
-    for (csp::VariableId v : view.problem->constraint(view.nary[i]).scope()) nary_of_[v].push_back(i);
+    for (csp::VariableId v : view.problem->constraint(view.nary[i]).scope())
+      nary_of_[v].push_back(i);
   }
   nary_done_.assign(k, 0);
   in_nary_.assign(k, 0);

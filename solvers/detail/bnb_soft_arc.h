@@ -74,9 +74,13 @@ class SoftArcConsistency {
   std::int64_t lower_bound() const { return c0_; }
   std::size_t num_variables() const { return size_.size(); }
   std::uint32_t domain_size(csp::VariableId v) const { return view_->size(v); }
-  std::uint32_t alive_count(csp::VariableId v) const { return static_cast<std::uint32_t>(size_[v]); }
+  std::uint32_t alive_count(csp::VariableId v) const {
+    return static_cast<std::uint32_t>(size_[v]);
+  }
   bool alive(csp::VariableId v, std::uint32_t a) const { return alive_[view_->offset[v] + a] != 0; }
-  std::int64_t unary(csp::VariableId v, std::uint32_t a) const { return unary_[view_->offset[v] + a]; }
+  std::int64_t unary(csp::VariableId v, std::uint32_t a) const {
+    return unary_[view_->offset[v] + a];
+  }
   std::size_t num_edges() const { return view_->edges.size(); }
   std::int64_t binary(std::size_t e, std::uint32_t a, std::uint32_t b) const;
   // The edges of v (ids into the view) and the pair variable on each.

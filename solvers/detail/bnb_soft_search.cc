@@ -8,10 +8,14 @@ namespace sightline::solvers::detail {
 namespace {
 const char* level_name(SoftArcConsistency::Level level) {
   switch (level) {
-    case SoftArcConsistency::Level::kNode: return "nc";
-    case SoftArcConsistency::Level::kArc: return "ac";
-    case SoftArcConsistency::Level::kDirectional: return "fdac";
-    case SoftArcConsistency::Level::kExistential: return "edac";
+    case SoftArcConsistency::Level::kNode:
+      return "nc";
+    case SoftArcConsistency::Level::kArc:
+      return "ac";
+    case SoftArcConsistency::Level::kDirectional:
+      return "fdac";
+    case SoftArcConsistency::Level::kExistential:
+      return "edac";
   }
   return "?";
 }

@@ -56,7 +56,8 @@ std::string build_wcsp_view(const csp::Problem& problem, WcspView& view) {
   const std::size_t n = problem.num_variables();
   view.offset.assign(n + 1, 0);
   for (std::size_t v = 0; v < n; ++v) {
-    view.offset[v + 1] = view.offset[v] + static_cast<std::uint32_t>(problem.variable(v).domain.size());
+    view.offset[v + 1] =
+        view.offset[v] + static_cast<std::uint32_t>(problem.variable(v).domain.size());
   }
   view.values.resize(view.offset[n]);
   for (std::size_t v = 0; v < n; ++v) {
@@ -141,7 +142,8 @@ std::string build_wcsp_view(const csp::Problem& problem, WcspView& view) {
       }
     }
     soft_total += largest;
-    if (soft_total >= static_cast<double>(WcspView::kSoftCap)) return "the soft costs are too large";
+    if (soft_total >= static_cast<double>(WcspView::kSoftCap))
+      return "the soft costs are too large";
   }
   return "";
 }

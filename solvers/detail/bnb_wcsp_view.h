@@ -33,8 +33,8 @@ struct WcspView {
   static constexpr std::int64_t kSoftCap = std::int64_t{1} << 50;
 
   struct Edge {
-    csp::VariableId x = 0, y = 0;     // x < y
-    std::vector<std::int64_t> cost;   // cost[a * size(y) + b], value indices a of x, b of y
+    csp::VariableId x = 0, y = 0;    // x < y
+    std::vector<std::int64_t> cost;  // cost[a * size(y) + b], value indices a of x, b of y
   };
 
   std::size_t num_variables() const { return offset.size() - 1; }

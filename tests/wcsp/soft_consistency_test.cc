@@ -47,8 +47,8 @@ std::unique_ptr<csp::Problem> random_wcsp(std::mt19937& rng) {
     if (coin(rng) < 60) {
       std::vector<csp::Table::Entry> entries;
       for (double a : domains[v]) entries.push_back({{a}, static_cast<double>(cost(rng))});
-      p->add_constraint(std::make_unique<csp::Table>(std::vector<csp::VariableId>{csp::VariableId(v)},
-                                                     entries, 0.0, 1.0 + coin(rng) % 3));
+      p->add_constraint(std::make_unique<csp::Table>(
+          std::vector<csp::VariableId>{csp::VariableId(v)}, entries, 0.0, 1.0 + coin(rng) % 3));
     }
   }
   for (int x = 0; x < n; ++x) {
@@ -57,8 +57,8 @@ std::unique_ptr<csp::Problem> random_wcsp(std::mt19937& rng) {
       if (roll < 35) continue;
       const std::vector<csp::VariableId> scope{csp::VariableId(x), csp::VariableId(y)};
       if (roll < 45) {
-        p->add_constraint(std::make_unique<csp::NotEqual>(scope[0], scope[1], 0,
-                                                          1.0 + cost(rng), coin(rng) < 30));
+        p->add_constraint(std::make_unique<csp::NotEqual>(scope[0], scope[1], 0, 1.0 + cost(rng),
+                                                          coin(rng) < 30));
         continue;
       }
       std::vector<csp::Table::Entry> soft, hard;
@@ -69,7 +69,8 @@ std::unique_ptr<csp::Problem> random_wcsp(std::mt19937& rng) {
         }
       }
       p->add_constraint(std::make_unique<csp::Table>(scope, soft, cost(rng), 1.0 + coin(rng) % 3));
-      if (!hard.empty()) p->add_constraint(std::make_unique<csp::Table>(scope, hard, 0.0, 1.0, true));
+      if (!hard.empty())
+        p->add_constraint(std::make_unique<csp::Table>(scope, hard, 0.0, 1.0, true));
     }
   }
   // Now and then a ternary table (soft, or hard forbidding a few triples) or an
@@ -293,9 +294,10 @@ TEST(SoftArcConsistency, BnbReturnsTheBruteForceOptimumAndCountAtEveryLevel) {
     const testing::BruteForceOptimum expected = testing::brute_force_optimum(*p);
     for (const char* level : {"none", "nc", "ac", "fdac", "edac"}) {
       for (const char* count : {"false", "true"}) {
-        auto solver = SolverRegistry::global().create(
-            "bnb", {{"consistency", level}, {"count_optimal", count},
-                    {"last_conflict", k % 2 ? "true" : "false"}});
+        auto solver =
+            SolverRegistry::global().create("bnb", {{"consistency", level},
+                                                    {"count_optimal", count},
+                                                    {"last_conflict", k % 2 ? "true" : "false"}});
         const SolverResult r = solver->solve(*p, p->default_assignment(), SolveContext{});
         ASSERT_EQ(r.feasible(), expected.feasible) << "problem " << k << " " << level;
         EXPECT_EQ(r.message.find("soft arc") != std::string::npos, std::string(level) != "none");
@@ -315,16 +317,19 @@ TEST(SoftArcConsistency, BnbReturnsTheBruteForceOptimumAndCountAtEveryLevel) {
 
 TEST(SoftArcConsistency, NonIntegerOrOtherNaryProblemsFallBackToForwardChecking) {
   csp::Problem p;
-  for (int v = 0; v < 3; ++v) p.add_variable("x" + std::to_string(v), csp::Domain::value_set({0, 1}));
-  p.add_constraint(std::make_unique<csp::Table>(std::vector<csp::VariableId>{0, 1},
-                                                std::vector<csp::Table::Entry>{{{0, 0}, 1.5}}, 0.0));
+  for (int v = 0; v < 3; ++v)
+    p.add_variable("x" + std::to_string(v), csp::Domain::value_set({0, 1}));
+  p.add_constraint(std::make_unique<csp::Table>(
+      std::vector<csp::VariableId>{0, 1}, std::vector<csp::Table::Entry>{{{0, 0}, 1.5}}, 0.0));
   detail::WcspView view;
   EXPECT_NE(detail::build_wcsp_view(p, view), "");  // a cost of 1.5
-  const SolverResult r = SolverRegistry::global().create("bnb")->solve(p, p.default_assignment(), {});
+  const SolverResult r =
+      SolverRegistry::global().create("bnb")->solve(p, p.default_assignment(), {});
   EXPECT_EQ(r.message.find("soft arc"), std::string::npos);
   EXPECT_EQ(r.cost(), 0.0);
   csp::Problem q;
-  for (int v = 0; v < 3; ++v) q.add_variable("x" + std::to_string(v), csp::Domain::value_set({0, 1}));
+  for (int v = 0; v < 3; ++v)
+    q.add_variable("x" + std::to_string(v), csp::Domain::value_set({0, 1}));
   q.add_constraint(std::make_unique<csp::Table>(std::vector<csp::VariableId>{0, 1, 2},
                                                 std::vector<csp::Table::Entry>{}, 1.0));
   EXPECT_EQ(detail::build_wcsp_view(q, view), "");  // a ternary table is carried
@@ -336,8 +341,8 @@ TEST(SoftArcConsistency, NonIntegerOrOtherNaryProblemsFallBackToForwardChecking)
 }
 
 TEST(SoftArcConsistency, PropagationStopsWhenTheStopCheckSaysSo) {
-  const auto problem = csp::read_wcsp_file(std::string(SIGHTLINE_SHARED_DIR) +
-                                           "/data/wcsp/celar7sub0.wcsp.gz");
+  const auto problem =
+      csp::read_wcsp_file(std::string(SIGHTLINE_SHARED_DIR) + "/data/wcsp/celar7sub0.wcsp.gz");
   const detail::WcspView view = view_of(*problem);
   SoftArcConsistency s;
   s.load(view, Level::kExistential);
@@ -360,8 +365,7 @@ class WcspInstance : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WcspInstance, EdacBnbProvesTheKnownOptimum) {
   const std::string name = GetParam();
-  const std::string file =
-      kDataDir + name + (name == "celar7sub0" ? ".wcsp.gz" : ".wcsp");
+  const std::string file = kDataDir + name + (name == "celar7sub0" ? ".wcsp.gz" : ".wcsp");
   const auto problem = csp::read_wcsp_file(file);
   long long known = -1;
   std::ifstream(kDataDir + name + ".ub") >> known;
