@@ -52,7 +52,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   support_.assign(total, 0);
   full_support_.assign(total, 0);
   trail_.clear();
-  in_ac_.assign(m, 0);
+  in_ac_.assign(2 * m, 0);
   in_dac_.assign(m, 0);
   in_eac_.assign(n, 0);
   in_nc_.assign(n, 0);
@@ -65,7 +65,8 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   last_edge_ = -1;
   // The first propagate() enforces the level everywhere.
   for (std::uint32_t e = 0; e < m; ++e) {
-    push_edge(e);
+    push_ac(e, true);
+    push_ac(e, false);
     if (level_ >= Level::kDirectional) push_dac(e);
   }
   for (std::uint32_t i = 0; i < k; ++i) {
@@ -82,10 +83,11 @@ std::int64_t SoftArcConsistency::binary(std::size_t e, std::uint32_t a, std::uin
   return cost(static_cast<std::uint32_t>(e), a, b);
 }
 
-void SoftArcConsistency::push_edge(std::uint32_t e) {
-  if (in_ac_[e]) return;
-  in_ac_[e] = 1;
-  ac_queue_.push_back(e);
+void SoftArcConsistency::push_ac(std::uint32_t e, bool onto_x) {
+  const std::uint32_t item = 2 * e + (onto_x ? 0 : 1);
+  if (in_ac_[item]) return;
+  in_ac_[item] = 1;
+  ac_queue_.push_back(item);
 }
 void SoftArcConsistency::push_dac(std::uint32_t e) {
   if (in_dac_[e]) return;
@@ -128,10 +130,11 @@ void SoftArcConsistency::unary_increased(csp::VariableId v) {
   if (level_ == Level::kExistential) push_eac(v);
 }
 
-// Costs of edge e went up somewhere (an extension): its simple and full supports.
-void SoftArcConsistency::edge_changed(std::uint32_t e) {
+// Costs of edge e went up in some columns (an extension from the side opposite `onto_x`,
+// then projected onto `onto_x`'s rows): that side's simple supports, and full supports.
+void SoftArcConsistency::edge_changed(std::uint32_t e, bool onto_x) {
   if (level_ < Level::kArc) return;
-  push_edge(e);
+  push_ac(e, !onto_x);
   if (level_ < Level::kDirectional) return;
   push_dac(e);
   if (level_ == Level::kExistential) {
@@ -143,7 +146,7 @@ void SoftArcConsistency::edge_changed(std::uint32_t e) {
 void SoftArcConsistency::value_removed(csp::VariableId v) {
   push_nc(v);
   for (const Neighbour& nb : neighbours_[v]) {
-    push_edge(nb.edge);  // kNode too: a singleton side is projected
+    push_ac(nb.edge, !nb.is_x);  // the other side's supports in v (kNode: once v is fixed)
     if (level_ >= Level::kDirectional && !nb.is_x) push_dac(nb.edge);
     if (level_ == Level::kExistential) push_eac(nb.other);
   }
@@ -224,14 +227,17 @@ bool SoftArcConsistency::project_simple(std::uint32_t e, bool onto_x) {
   const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
   bool moved = false;
   std::uint32_t* support = support_.data() + (onto_x ? delta_x_[e] : delta_y_[e]);
+  const SidedPair pair = sided(e, onto_x);
+  const std::int64_t* alive_s = alive_.data() + sb;
+  const std::int64_t* alive_o = alive_.data() + ob;
   for (std::uint32_t a = 0; a < ds; ++a) {
-    if (!alive_[sb + a]) continue;
+    if (!alive_s[a]) continue;
     const std::uint32_t hint = support[a];
-    if (alive_[ob + hint] && (onto_x ? cost(e, a, hint) : cost(e, hint, a)) == 0) continue;
+    if (alive_o[hint] && pair.at(a, hint) == 0) continue;
     std::int64_t least = kForbidden;
     for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
-      if (!alive_[ob + b]) continue;
-      const std::int64_t c = onto_x ? cost(e, a, b) : cost(e, b, a);
+      if (!alive_o[b]) continue;
+      const std::int64_t c = pair.at(a, b);
       if (c < least) {
         least = c;
         support[a] = b;
@@ -260,9 +266,8 @@ bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   const csp::VariableId s = onto_x ? edge.x : edge.y, o = onto_x ? edge.y : edge.x;
   const std::uint32_t ds = view_->size(s), dn = view_->size(o);
   const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
-  auto pair_cost = [&](std::uint32_t a, std::uint32_t b) {
-    return onto_x ? cost(e, a, b) : cost(e, b, a);
-  };
+  const SidedPair pair = sided(e, onto_x);
+  auto pair_cost = [&pair](std::uint32_t a, std::uint32_t b) { return pair.at(a, b); };
   // alpha[a]: the least C(a, b) + C_o(b): what a full support of a lacks.
   scratch_alpha_.assign(ds, 0);
   bool lacking = false;
@@ -315,19 +320,17 @@ bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   }
   last_edge_ = e;
   unary_increased(s);
-  edge_changed(e);
+  edge_changed(e, onto_x);
   return true;
 }
 
-void SoftArcConsistency::revise_edge(std::uint32_t e) {
+void SoftArcConsistency::revise_side(std::uint32_t item) {
+  const std::uint32_t e = item / 2;
+  const bool onto_x = item % 2 == 0;
   const WcspView::Edge& edge = view_->edges[e];
-  if (level_ == Level::kNode) {
-    if (size_[edge.y] == 1) project_simple(e, true);
-    if (size_[edge.x] == 1) project_simple(e, false);
-    return;
-  }
-  project_simple(e, true);
-  project_simple(e, false);
+  // NC* projects a pair only once the other side is fixed (forward checking).
+  if (level_ == Level::kNode && size_[onto_x ? edge.y : edge.x] != 1) return;
+  project_simple(e, onto_x);
 }
 
 // EAC on v: the least, over alive a, of C_v(a) + sum over pairs of what a's full support
@@ -342,11 +345,18 @@ void SoftArcConsistency::revise_existential(csp::VariableId v) {
     for (const Neighbour& nb : neighbours_[v]) {
       if (sum >= best) break;
       const std::uint32_t ob = view_->offset[nb.other];
+      const SidedPair pair = sided(nb.edge, nb.is_x);
+      auto lack = [&](std::uint32_t b) { return add_cost(pair.at(a, b), unary_[ob + b]); };
+      std::uint32_t& hint = full_support_[(nb.is_x ? delta_x_[nb.edge] : delta_y_[nb.edge]) + a];
+      if (alive_[ob + hint] && lack(hint) == 0) continue;
       std::int64_t least = kForbidden;
       for (std::uint32_t b = 0; b < view_->size(nb.other) && least > 0; ++b) {
         if (!alive_[ob + b]) continue;
-        const std::int64_t c = nb.is_x ? cost(nb.edge, a, b) : cost(nb.edge, b, a);
-        least = std::min(least, add_cost(c, unary_[ob + b]));
+        const std::int64_t c = lack(b);
+        if (c < least) {
+          least = c;
+          hint = b;
+        }
       }
       sum = add_cost(sum, least);
     }
@@ -355,6 +365,20 @@ void SoftArcConsistency::revise_existential(csp::VariableId v) {
   if (best == 0) return;
   for (const Neighbour& nb : neighbours_[v]) project_full(nb.edge, nb.is_x);
   push_nc(v);
+}
+
+std::int64_t SoftArcConsistency::support_cost(csp::VariableId v, std::uint32_t a) const {
+  std::int64_t sum = unary_[view_->offset[v] + a];
+  for (const Neighbour& nb : neighbours_[v]) {
+    const std::uint32_t ob = view_->offset[nb.other];
+    const SidedPair pair = sided(nb.edge, nb.is_x);
+    std::int64_t least = kForbidden;
+    for (std::uint32_t b = 0; b < view_->size(nb.other) && least > 0; ++b) {
+      if (alive_[ob + b]) least = std::min(least, add_cost(pair.at(a, b), unary_[ob + b]));
+    }
+    sum = add_cost(sum, least);
+  }
+  return sum;
 }
 
 std::size_t SoftArcConsistency::open_nary(csp::VariableId v) const {
@@ -452,12 +476,18 @@ bool SoftArcConsistency::propagate() {
       in_nary_[i] = 0;
       revise_nary(i);
     } else if (!ac_queue_.empty()) {
-      const std::uint32_t e = ac_queue_.back();
+      const std::uint32_t item = ac_queue_.back();
       ac_queue_.pop_back();
-      in_ac_[e] = 0;
-      revise_edge(e);
+      in_ac_[item] = 0;
+      revise_side(item);
     } else if (!dac_queue_.empty()) {
-      const std::uint32_t e = dac_queue_.back();
+      // Highest y first: costs then flow down toward lower ids in one sweep.
+      std::size_t pick = 0;
+      for (std::size_t i = 1; i < dac_queue_.size(); ++i) {
+        if (view_->edges[dac_queue_[i]].y > view_->edges[dac_queue_[pick]].y) pick = i;
+      }
+      const std::uint32_t e = dac_queue_[pick];
+      dac_queue_[pick] = dac_queue_.back();
       dac_queue_.pop_back();
       in_dac_[e] = 0;
       project_full(e, true);  // x < y: costs flow toward the lower id

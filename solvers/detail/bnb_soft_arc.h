@@ -81,6 +81,9 @@ class SoftArcConsistency {
   std::int64_t unary(csp::VariableId v, std::uint32_t a) const {
     return unary_[view_->offset[v] + a];
   }
+  // C_v(a) + sum over v's pairs of min over b (C(a, b) + C_w(b)): what a costs with its
+  // neighbours' best answers; 0 for EDAC's existential support (value ordering).
+  std::int64_t support_cost(csp::VariableId v, std::uint32_t a) const;
   std::size_t num_edges() const { return view_->edges.size(); }
   std::int64_t binary(std::size_t e, std::uint32_t a, std::uint32_t b) const;
   // The edges of v (ids into the view) and the pair variable on each.
@@ -111,21 +114,42 @@ class SoftArcConsistency {
     if (m >= kForbidden) return kForbidden;
     return m - deltas_[delta_x_[e] + a] - deltas_[delta_y_[e] + b];
   }
+  // The costs of pair e seen from one side s (x when onto_x): at(a, b) = C(s = a, o = b),
+  // with the addresses hoisted out of the loops that scan rows.
+  struct SidedPair {
+    const std::int64_t* matrix;
+    std::size_t row_stride, column_stride;
+    const std::int64_t* delta_s;
+    const std::int64_t* delta_o;
+    std::int64_t at(std::uint32_t a, std::uint32_t b) const {
+      const std::int64_t m = matrix[a * row_stride + b * column_stride];
+      return m >= kForbidden ? kForbidden : m - delta_s[a] - delta_o[b];
+    }
+  };
+  SidedPair sided(std::uint32_t e, bool onto_x) const {
+    const WcspView::Edge& edge = view_->edges[e];
+    const std::size_t dy = view_->size(edge.y);
+    const std::int64_t* dx = deltas_.data() + delta_x_[e];
+    const std::int64_t* dyv = deltas_.data() + delta_y_[e];
+    return onto_x ? SidedPair{edge.cost.data(), dy, 1, dx, dyv}
+                  : SidedPair{edge.cost.data(), 1, dy, dyv, dx};
+  }
   // Moves the cheapest cost of each alive value row onto that side (AC*'s projection);
   // returns true when something moved.
   bool project_simple(std::uint32_t e, bool onto_x);
   // Full supports toward `onto_x`'s side (extension from the other side, then projection).
   bool project_full(std::uint32_t e, bool onto_x);
-  void revise_edge(std::uint32_t e);
+  // AC* on one side of a pair: item = 2 e (onto x) or 2 e + 1 (onto y).
+  void revise_side(std::uint32_t item);
   void revise_existential(csp::VariableId v);
   void revise_nary(std::uint32_t k);
   std::int64_t nary_cost(const csp::Constraint& con) const;
   bool node_consistency(csp::VariableId v);
   bool prune(csp::VariableId v);
   void unary_increased(csp::VariableId v);
-  void edge_changed(std::uint32_t e);
+  void edge_changed(std::uint32_t e, bool onto_x);
   void value_removed(csp::VariableId v);
-  void push_edge(std::uint32_t e);
+  void push_ac(std::uint32_t e, bool onto_x);
   void push_dac(std::uint32_t e);
   void push_eac(csp::VariableId v);
   void push_nc(csp::VariableId v);
@@ -151,7 +175,7 @@ class SoftArcConsistency {
   };
   std::vector<Change> trail_;
   // Work queues with membership flags (not trailed: emptied on failure).
-  std::vector<std::uint32_t> ac_queue_, dac_queue_;
+  std::vector<std::uint32_t> ac_queue_, dac_queue_;  // AC items (see revise_side), edges
   std::vector<csp::VariableId> eac_queue_, nc_queue_;
   std::vector<std::uint32_t> nary_queue_;
   std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_, in_nary_;

@@ -80,11 +80,16 @@ void SoftArcSearch::search() {
     leaf();
     return;
   }
+  // The value of least unary cost, ties to the one whose neighbours answer it cheapest
+  // (EDAC's existential support costs 0 both ways).
   std::uint32_t a = 0;
-  std::int64_t least = -1;
+  std::int64_t least = -1, least_support = 0;
   for (std::uint32_t b = 0; b < state_.domain_size(x); ++b) {
-    if (state_.alive(x, b) && (least < 0 || state_.unary(x, b) < least)) {
+    if (!state_.alive(x, b) || (least >= 0 && state_.unary(x, b) > least)) continue;
+    const std::int64_t support = state_.support_cost(x, b);
+    if (least < 0 || state_.unary(x, b) < least || support < least_support) {
       least = state_.unary(x, b);
+      least_support = support;
       a = b;
     }
   }
