@@ -101,6 +101,8 @@ class SoftArcConsistency {
   std::vector<std::int64_t> snapshot() const;
 
  private:
+  // Queue steps (and n-ary forward checks) between two asks of the stop check.
+  static constexpr std::uint64_t kStopStride = 64;
   void set(std::int64_t& cell, std::int64_t value) {
     trail_.push_back({&cell, cell});
     cell = value;
