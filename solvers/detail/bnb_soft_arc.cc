@@ -15,6 +15,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   view_ = &view;
   level_ = level;
   top_ = kForbidden;
+  checked_top_ = kForbidden + 1;  // the first propagate() checks every value
   c0_ = 0;
   const std::size_t n = view.num_variables();
   unary_ = view.unary;
@@ -184,9 +185,13 @@ bool SoftArcConsistency::assign(csp::VariableId v, std::uint32_t a) {
 }
 
 bool SoftArcConsistency::prune(csp::VariableId v) {
-  const std::uint32_t begin = view_->offset[v];
-  for (std::uint32_t a = 0; a < view_->size(v) && !failed_; ++a) {
-    if (alive_[begin + a] && add_cost(c0_, unary_[begin + a]) >= top_) remove(v, a);
+  const std::uint32_t begin = view_->offset[v], size = view_->size(v);
+  const std::int64_t* alive = alive_.data() + begin;
+  const std::int64_t* unary = unary_.data() + begin;
+  // c0 + C(a) >= top, without overflow: C(a) >= top - c0 (c0 < top here).
+  const std::int64_t room = top_ - c0_;
+  for (std::uint32_t a = 0; a < size && !failed_; ++a) {
+    if (alive[a] && unary[a] >= room) remove(v, a);
   }
   return !failed_;
 }
@@ -385,8 +390,12 @@ bool SoftArcConsistency::propagate() {
     failed_ = false;
     return false;
   }
-  // top may have dropped since these values were last checked.
-  for (csp::VariableId v = 0; v < size_.size() && !failed_; ++v) prune(v);
+  // top may have dropped since this state's values were last checked against it (the top
+  // they were checked with is trailed, so an undone state brings its own back).
+  if (checked_top_ > top_) {
+    set(checked_top_, top_);
+    for (csp::VariableId v = 0; v < size_.size() && !failed_; ++v) prune(v);
+  }
   std::uint64_t steps = 0;
   while (!failed_ && ++steps <= kMaxSteps) {
     if (steps % kStopStride == 0 && stop_ && stop_()) {
@@ -448,6 +457,7 @@ std::vector<std::int64_t> SoftArcConsistency::snapshot() const {
   s.insert(s.end(), size_.begin(), size_.end());
   s.insert(s.end(), deltas_.begin(), deltas_.end());
   s.insert(s.end(), nary_done_.begin(), nary_done_.end());
+  s.push_back(checked_top_);
   return s;
 }
 

@@ -160,6 +160,7 @@ class SoftArcConsistency {
   const WcspView* view_ = nullptr;
   Level level_ = Level::kExistential;
   std::int64_t top_ = kForbidden;
+  std::int64_t checked_top_ = 0;  // the top every alive value was last checked with (trailed)
   std::int64_t c0_ = 0;
   std::vector<std::int64_t> unary_, alive_, size_;
   std::vector<std::int64_t> deltas_;
