@@ -54,7 +54,8 @@ class SoftArcConsistency {
   Level level() const { return level_; }
 
   // The pruning threshold (kForbidden when there is no incumbent). Lowering it is always
-  // valid; the next propagate() prunes with it.
+  // valid; the next propagate() prunes with it. Raising it does not bring back values
+  // already removed (the state then holds only for costs below the old top).
   void set_top(std::int64_t top) { top_ = top; }
   std::int64_t top() const { return top_; }
 
