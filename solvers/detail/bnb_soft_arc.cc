@@ -437,7 +437,7 @@ bool SoftArcConsistency::propagate() {
       break;
     }
   }
-  const bool ok = !failed_ && c0_ < top_;
+  const bool ok = !failed_ && c0_ < top_ && add_cost(c0_, open_nary_bound()) < top_;
   clear_queues();
   failed_ = false;
   return ok;

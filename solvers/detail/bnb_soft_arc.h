@@ -73,6 +73,10 @@ class SoftArcConsistency {
   void undo(std::size_t mark);
 
   std::int64_t lower_bound() const { return c0_; }
+  // What the soft constraints of arity >= 3 not yet projected must still cost at least
+  // (min_violation over their fixed part), as of the last successful propagate(): c0 plus
+  // it bounds every completion too, and propagate() fails when that reaches top.
+  std::int64_t nary_lower_bound() const { return nary_bound_; }
   std::size_t num_variables() const { return size_.size(); }
   std::uint32_t domain_size(csp::VariableId v) const { return view_->size(v); }
   std::uint32_t alive_count(csp::VariableId v) const {
@@ -147,6 +151,7 @@ class SoftArcConsistency {
   void revise_existential(csp::VariableId v);
   void revise_nary(std::uint32_t k);
   std::int64_t nary_cost(const csp::Constraint& con) const;
+  std::int64_t open_nary_bound();
   bool node_consistency(csp::VariableId v);
   bool prune(csp::VariableId v);
   void unary_increased(csp::VariableId v);
@@ -187,6 +192,7 @@ class SoftArcConsistency {
   // projected (trailed); scratch values and assigned flags for violation/min_violation.
   std::vector<std::vector<std::uint32_t>> nary_of_;
   std::vector<std::int64_t> nary_done_;
+  std::int64_t nary_bound_ = 0;  // see nary_lower_bound()
   std::vector<double> values_;
   std::vector<std::uint8_t> assigned_;
   bool failed_ = false;

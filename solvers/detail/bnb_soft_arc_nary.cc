@@ -78,4 +78,27 @@ void SoftArcConsistency::revise_nary(std::uint32_t k) {
   for (csp::VariableId u : scope) assigned_[u] = 0;
 }
 
+// The soft n-ary constraints still open hold costs no move has touched, so what each
+// must still cost at least (min_violation over the fixed part; floor keeps it a bound) adds
+// to c0 as a bound of every completion. Hard ones add nothing: forward checking has them.
+std::int64_t SoftArcConsistency::open_nary_bound() {
+  nary_bound_ = 0;
+  for (std::uint32_t k = 0; k < nary_done_.size(); ++k) {
+    const csp::Constraint& con = view_->problem->constraint(view_->nary[k]);
+    if (nary_done_[k] || con.is_hard()) continue;
+    for (csp::VariableId u : con.scope()) {
+      if (size_[u] != 1) continue;
+      const std::uint32_t ub = view_->offset[u];
+      for (std::uint32_t a = 0; a < view_->size(u); ++a) {
+        if (alive_[ub + a]) values_[u] = view_->values[ub + a];
+      }
+      assigned_[u] = 1;
+    }
+    const double least = std::floor(con.weight() * con.min_violation(values_, assigned_));
+    for (csp::VariableId u : con.scope()) assigned_[u] = 0;
+    if (least > 0) nary_bound_ = add_cost(nary_bound_, static_cast<std::int64_t>(least));
+  }
+  return nary_bound_;
+}
+
 }  // namespace sightline::solvers::detail

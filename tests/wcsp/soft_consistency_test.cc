@@ -176,7 +176,8 @@ TEST(SoftArcConsistency, LowerBoundNeverExceedsTheOptimumAtTheRootOrAlongBranche
       if (root.cost == kForbidden) continue;  // an infeasible problem may fail or not
       ++feasible_roots;
       ASSERT_TRUE(ok) << "problem " << k << " level " << int(level);
-      ASSERT_LE(s.lower_bound(), root.cost) << "problem " << k << " level " << int(level);
+      ASSERT_LE(s.lower_bound() + s.nary_lower_bound(), root.cost)
+          << "problem " << k << " level " << int(level);
       positive_bounds += s.lower_bound() > 0;
       for (csp::VariableId v = 0; v < p->num_variables(); ++v) {
         for (std::uint32_t a = 0; a < view.size(v); ++a) {
@@ -207,7 +208,8 @@ TEST(SoftArcConsistency, LowerBoundNeverExceedsTheOptimumAtTheRootOrAlongBranche
         if (sub.cost == kForbidden) break;
         ++checked_nodes;
         ASSERT_TRUE(still) << "a feasible subproblem failed, problem " << k;
-        ASSERT_LE(s.lower_bound(), sub.cost) << "problem " << k << " level " << int(level);
+        ASSERT_LE(s.lower_bound() + s.nary_lower_bound(), sub.cost)
+            << "problem " << k << " level " << int(level);
         ASSERT_GE(s.lower_bound(), previous) << "the bound went down, problem " << k;
         previous = s.lower_bound();
       }
