@@ -49,7 +49,9 @@ void BranchAndBoundSolver::solve_into(const csp::Problem& problem, std::span<con
   const csp::Assignment start_copy(start.begin(), start.end());
   problem.check_assignment(start_copy);
   using Level = detail::SoftArcConsistency::Level;
-  if (options_.consistency != "none" && detail::build_wcsp_view(problem, *view_).empty()) {
+  const std::string unsuited =
+      options_.consistency == "none" ? "" : detail::build_wcsp_view(problem, *view_);
+  if (options_.consistency != "none" && unsuited.empty()) {
     detail::SoftArcSearch::Settings settings;
     settings.level = options_.consistency == "nc"     ? Level::kNode
                      : options_.consistency == "ac"   ? Level::kArc
@@ -62,6 +64,8 @@ void BranchAndBoundSolver::solve_into(const csp::Problem& problem, std::span<con
   } else {
     search_->run(problem, start_copy, options_.count_optimal, options_.use_start_bound, budget,
                  result);
+    // Say why the consistency asked for was not used.
+    if (!unsuited.empty()) result.message += "; forward checking only: " + unsuited;
   }
   finish_result(problem, context, budget, result);
 }

@@ -360,6 +360,9 @@ TEST(SoftArcConsistency, NonIntegerOrOtherNaryProblemsFallBackToForwardChecking)
   const SolverResult r =
       SolverRegistry::global().create("bnb")->solve(p, p.default_assignment(), {});
   EXPECT_EQ(r.message.find("soft arc"), std::string::npos);
+  EXPECT_NE(r.message.find("forward checking only: a weighted cost is not a non-negative integer"),
+            std::string::npos)
+      << r.message;
   EXPECT_EQ(r.cost(), 0.0);
   csp::Problem q;
   for (int v = 0; v < 3; ++v)
