@@ -41,6 +41,15 @@
 // solvers/detail/bnb_search.h.
 //
 // Costs are compared with a relative tolerance of 1e-9 (integer costs are exact).
+//
+// Soft arc consistency (option `consistency`, default edac): when the problem is a weighted
+// CSP with integer costs (constraints of arity 1 or 2 of any kind, n-ary tables and
+// all_differents, every weighted cost integral: solvers/detail/bnb_wcsp_view.h), the search
+// above is replaced by depth-first binary branching maintaining NC*, AC*, FDAC* or EDAC*
+// (solvers/detail/bnb_soft_arc.h, bnb_soft_search.h): a far stronger bound (c0 after cost
+// moves between constraints), value ordering by unary cost, dom/wdeg variable ordering
+// (last-conflict optional). Any other problem, or `consistency: none`, uses the
+// forward-checking search described above. docs/WCSP.md compares both with toulbar2.
 #pragma once
 
 #include <cstdint>
@@ -54,7 +63,9 @@ namespace sightline::solvers {
 
 namespace detail {
 class BranchAndBoundSearch;
-}
+class SoftArcSearch;
+struct WcspView;
+}  // namespace detail
 
 class BranchAndBoundSolver : public Solver {
  public:
@@ -64,6 +75,10 @@ class BranchAndBoundSolver : public Solver {
     bool count_optimal = false;
     // Use the start assignment's score, when it is feasible, as the initial upper bound.
     bool use_start_bound = true;
+    // Soft arc consistency on integer-cost WCSPs: none, nc, ac, fdac or edac.
+    std::string consistency = "edac";
+    // With soft arc consistency: branch again on the variable whose assignment last failed.
+    bool last_conflict = false;
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;
@@ -82,6 +97,8 @@ class BranchAndBoundSolver : public Solver {
   std::string name_;
   Options options_;
   std::unique_ptr<detail::BranchAndBoundSearch> search_;  // scratch, reused across solves
+  std::unique_ptr<detail::WcspView> view_;
+  std::unique_ptr<detail::SoftArcSearch> soft_search_;
 };
 
 }  // namespace sightline::solvers

@@ -89,13 +89,26 @@ SolverResult run_bnb(const csp::Problem& p, const OptionValues& options = {},
   return solver->solve(p, s, context);
 }
 
-TEST(BranchAndBound, FindsTheBruteForceOptimumOnRandomProblems) {
+// The same checks for the forward-checking search (consistency: none) and for soft arc
+// consistency (edac, the default; these problems have integer costs, arity <= 3).
+class BranchAndBoundAtLevel : public ::testing::TestWithParam<std::string> {
+ protected:
+  SolverResult run(const csp::Problem& p, OptionValues options = {},
+                   const csp::Assignment* start = nullptr, SolveLimits limits = {}) {
+    options["consistency"] = GetParam();
+    const SolverResult r = run_bnb(p, options, start, limits);
+    EXPECT_EQ(r.message.find("soft arc") != std::string::npos, GetParam() != "none") << r.message;
+    return r;
+  }
+};
+
+TEST_P(BranchAndBoundAtLevel, FindsTheBruteForceOptimumOnRandomProblems) {
   std::mt19937 rng(2024);
   int feasible = 0, infeasible = 0;
   for (int round = 0; round < 150; ++round) {
     auto p = random_problem(rng, 3 + round % 6, round % 3 == 0 ? 0.5 : 0.2);
     const auto expected = testing::brute_force_optimum(*p);
-    const SolverResult r = run_bnb(*p);
+    const SolverResult r = run(*p);
     if (expected.feasible) {
       ++feasible;
       ASSERT_EQ(r.stop, StopReason::kProvenOptimal) << "round " << round << ": " << r.message;
@@ -113,14 +126,14 @@ TEST(BranchAndBound, FindsTheBruteForceOptimumOnRandomProblems) {
   EXPECT_GT(infeasible, 5);
 }
 
-TEST(BranchAndBound, CountsEveryOptimalAssignment) {
+TEST_P(BranchAndBoundAtLevel, CountsEveryOptimalAssignment) {
   std::mt19937 rng(77);
   std::uint64_t total_counted = 0;
   for (int round = 0; round < 100; ++round) {
     auto p = random_problem(rng, 3 + round % 5, 0.3);
     const auto expected = testing::brute_force_optimum(*p);
     if (!expected.feasible) continue;
-    const SolverResult r = run_bnb(*p, {{"count_optimal", "true"}});
+    const SolverResult r = run(*p, {{"count_optimal", "true"}});
     ASSERT_EQ(r.stop, StopReason::kProvenOptimal);
     ASSERT_NEAR(r.cost(), expected.cost, 1e-9);
     ASSERT_EQ(r.solutions_at_best, expected.count) << "round " << round;
@@ -129,50 +142,52 @@ TEST(BranchAndBound, CountsEveryOptimalAssignment) {
   EXPECT_GT(total_counted, 100u);  // many ties, not just single optima
 }
 
-TEST(BranchAndBound, CountsOptimaAlsoWhenStartingFromAnOptimum) {
+TEST_P(BranchAndBoundAtLevel, CountsOptimaAlsoWhenStartingFromAnOptimum) {
   std::mt19937 rng(5);
   for (int round = 0; round < 30; ++round) {
     auto p = random_problem(rng, 5, 0.2);
     const auto expected = testing::brute_force_optimum(*p);
     if (!expected.feasible) continue;
-    const SolverResult first = run_bnb(*p);
-    const SolverResult again = run_bnb(*p, {{"count_optimal", "true"}}, &first.best);
+    const SolverResult first = run(*p);
+    const SolverResult again = run(*p, {{"count_optimal", "true"}}, &first.best);
     ASSERT_EQ(again.solutions_at_best, expected.count) << "round " << round;
   }
 }
 
-TEST(BranchAndBound, UsesAFeasibleStartAsTheInitialUpperBound) {
+TEST_P(BranchAndBoundAtLevel, UsesAFeasibleStartAsTheInitialUpperBound) {
   std::mt19937 rng(9);
   int checked = 0;
   for (int round = 0; round < 30; ++round) {
     auto p = random_problem(rng, 8, 0.1);
     const OptionValues no_bound = {{"use_start_bound", "false"}};
-    const SolverResult cold = run_bnb(*p, no_bound);
+    const SolverResult cold = run(*p, no_bound);
     if (!cold.feasible()) continue;
     ++checked;
     // From an optimal start only a strictly better assignment could replace it: none is.
-    const SolverResult warm = run_bnb(*p, {}, &cold.best);
+    const SolverResult warm = run(*p, {}, &cold.best);
     ASSERT_EQ(warm.stop, StopReason::kProvenOptimal);
     ASSERT_EQ(warm.best, cold.best);
     ASSERT_EQ(warm.cost(), cold.cost());
     // Without the bound, the start changes nothing.
-    const SolverResult ignored = run_bnb(*p, no_bound, &cold.best);
+    const SolverResult ignored = run(*p, no_bound, &cold.best);
     ASSERT_EQ(ignored.iterations, cold.iterations);
   }
   EXPECT_GT(checked, 10);
 }
 
-TEST(BranchAndBound, StopsAtTheNodeLimitWithTheBestFoundAndSaysItIsNotProved) {
+TEST_P(BranchAndBoundAtLevel, StopsAtTheNodeLimitWithTheBestFoundAndSaysItIsNotProved) {
   std::mt19937 rng(1);
   auto p = random_problem(rng, 14, 0.0);
   SolveLimits limits;
   limits.max_iterations = 20;
-  const SolverResult r = run_bnb(*p, {}, nullptr, limits);
+  const SolverResult r = run(*p, {}, nullptr, limits);
   EXPECT_EQ(r.stop, StopReason::kIterationLimit);
   EXPECT_LE(r.iterations, 20u);
   EXPECT_NE(r.message.find("not proved"), std::string::npos) << r.message;
   EXPECT_TRUE(r.feasible());  // no hard constraints: the first leaf is feasible
 }
+
+INSTANTIATE_TEST_SUITE_P(Levels, BranchAndBoundAtLevel, ::testing::Values("none", "edac"));
 
 // Forward checking one all_different over 800 variables of 800 values makes 640,000 checks
 // at the root, each over the whole scope: far longer than the limit. The search must stop
@@ -188,7 +203,12 @@ TEST(BranchAndBound, StopsAtATimeLimitInsideALongPropagation) {
       scope, std::vector<double>{}, csp::AllDifferent::Measure::kVariables, 1.0, true));
   SolveLimits limits;
   limits.time_limit_seconds = 0.02;
-  const SolverResult r = run_bnb(p, {}, nullptr, limits);
+  // With soft arc consistency (the default) the n-ary forward checking asks the budget too.
+  const SolverResult soft = run_bnb(p, {}, nullptr, limits);
+  EXPECT_EQ(soft.stop, StopReason::kTimeLimit) << soft.message;
+  EXPECT_EQ(soft.iterations, 0u) << soft.message;
+  EXPECT_NE(soft.message.find("soft arc consistency"), std::string::npos) << soft.message;
+  const SolverResult r = run_bnb(p, {{"consistency", "none"}}, nullptr, limits);
   EXPECT_EQ(r.stop, StopReason::kTimeLimit) << r.message;
   EXPECT_EQ(r.iterations, 0u) << "no node is entered before the root is propagated";
   std::smatch checks;

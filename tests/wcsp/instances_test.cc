@@ -28,8 +28,8 @@ struct InstanceRun {
 };
 
 // A node (iteration) limit rather than a time limit, so the outcome does not depend on the
-// machine: the hardest instance here, `example`, needs about 440,000 bnb nodes, and sls
-// runs end after their restarts. The limit only keeps a regression from hanging the suite.
+// machine: the hardest instance here, `example`, needs about 440,000 bnb nodes with
+// forward checking only (700 with EDAC), and sls runs end after their restarts. The limit only keeps a regression from hanging the suite.
 InstanceRun solve_instance(const std::string& name, const std::string& solver,
                            const OptionValues& options = {}) {
   InstanceRun run;
@@ -62,6 +62,13 @@ TEST_P(WcspInstance, BnbProvesTheKnownOptimum) {
   expect_known_optimum(GetParam(), run);
 }
 
+TEST_P(WcspInstance, ForwardCheckingBnbProvesTheKnownOptimum) {
+  const InstanceRun run = solve_instance(GetParam(), "bnb", {{"consistency", "none"}});
+  EXPECT_EQ(run.result.stop, StopReason::kProvenOptimal) << run.result.brief_report("bnb");
+  EXPECT_EQ(run.result.message.find("soft arc"), std::string::npos);
+  expect_known_optimum(GetParam(), run);
+}
+
 TEST_P(WcspInstance, SlsReachesTheKnownOptimum) {
   // Enough restarts to find every optimum here that sls finds at all (instances with a
   // positive optimum run all of them: sls cannot know it is optimal).
@@ -82,10 +89,13 @@ INSTANTIATE_TEST_SUITE_P(Toulbar2ValidationSet, WcspInstance,
 TEST(WcspInstances, Base2HasAsManyOptimaAsItsEnumFile) {
   const long long expected = read_number(kDataDir + "base2.enum");
   ASSERT_EQ(expected, 4704);  // the data file itself, so a misread is visible
-  const InstanceRun run = solve_instance("base2", "bnb", {{"count_optimal", "true"}});
-  EXPECT_EQ(run.result.stop, StopReason::kProvenOptimal);
-  EXPECT_EQ(run.result.cost(), 0.0);
-  EXPECT_EQ(run.result.solutions_at_best, static_cast<std::uint64_t>(expected));
+  for (const char* consistency : {"none", "edac"}) {
+    const InstanceRun run = solve_instance(
+        "base2", "bnb", {{"count_optimal", "true"}, {"consistency", consistency}});
+    EXPECT_EQ(run.result.stop, StopReason::kProvenOptimal);
+    EXPECT_EQ(run.result.cost(), 0.0);
+    EXPECT_EQ(run.result.solutions_at_best, static_cast<std::uint64_t>(expected)) << consistency;
+  }
 }
 
 }  // namespace
