@@ -5,6 +5,7 @@
 #include "solvers/grid.h"
 #include "solvers/sliding_octree.h"
 #include "solvers/sls.h"
+#include "solvers/tabu.h"
 
 namespace sightline::solvers {
 
@@ -20,6 +21,8 @@ void register_builtin_solvers(SolverRegistry& registry) {
       "exact depth-first branch and bound with forward checking (discrete); proves optimality");
   register_solver<CeresRefineSolver>(registry, "ceres-refine",
       "Ceres L-BFGS refinement of the continuous variables; never worse than its start");
+  register_solver<TabuSolver>(registry, "tabu",
+      "tabu search on exact weighted deltas, move table kept incrementally (discrete); anytime");
 }
 
 }  // namespace sightline::solvers

@@ -1,0 +1,82 @@
+#include "solvers/tabu.h"
+
+#include "solvers/detail/tabu_search.h"
+
+namespace sightline::solvers {
+
+namespace {
+constexpr std::size_t kMaxTableEntries = std::size_t{1} << 26;
+}
+
+const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
+  static const OptionSchema<Options> schema = [] {
+    OptionSchema<Options> s;
+    s.integer("tenure_min", &Options::tenure_min,
+              "shortest tabu tenure: steps a left value stays forbidden (>= 0)", 0);
+    s.integer("tenure_max", &Options::tenure_max,
+              "longest tabu tenure, steps (>= tenure_min); each move draws in between", 0);
+    s.integer("stall_moves", &Options::stall_moves,
+              "steps without a new best before a perturbation; 0 = 100 x variables, >= 2000", 0);
+    s.real("perturbation", &Options::perturbation,
+           "fraction of the variables a perturbation gives random values, in (0, 1]", 0, 1);
+    s.integer("restarts", &Options::restarts,
+              "cap on perturbations; -1 = none when a limit is set (10 fruitless ones without)",
+              -1);
+    s.integer("scan_all_below", &Options::scan_all_below,
+              "scan every variable's moves when the table has at most this many entries, "
+              "else only the variables in a violated constraint (>= 0)",
+              0);
+    s.boolean("stop_at_zero", &Options::stop_at_zero, "stop at a zero-cost feasible assignment");
+    return s;
+  }();
+  return schema;
+}
+
+std::string TabuSolver::Options::validate() const {
+  if (tenure_min < 0) return "tenure_min must be >= 0, got " + std::to_string(tenure_min);
+  if (tenure_max < tenure_min) {
+    return "tenure_max must be >= tenure_min (" + std::to_string(tenure_min) + "), got " +
+           std::to_string(tenure_max);
+  }
+  if (stall_moves < 0) {
+    return "stall_moves must be >= 0 (0 = automatic), got " + std::to_string(stall_moves);
+  }
+  if (!(perturbation > 0 && perturbation <= 1)) {
+    return "perturbation must be in (0, 1], got " + detail::format_real(perturbation);
+  }
+  if (restarts < -1) return "restarts must be >= -1 (-1 = no cap), got " + std::to_string(restarts);
+  if (scan_all_below < 0) {
+    return "scan_all_below must be >= 0, got " + std::to_string(scan_all_below);
+  }
+  return "";
+}
+
+TabuSolver::TabuSolver(std::string name, Options options)
+    : name_(std::move(name)), options_(options) {}
+
+std::string TabuSolver::unsuitable_reason(const csp::Problem& problem) const {
+  if (!problem.all_discrete()) return "needs discrete domains (every variable)";
+  std::size_t entries = 0;
+  for (const csp::Variable& v : problem.variables()) entries += v.domain.size();
+  if (entries > kMaxTableEntries) {
+    return "the move table would have " + std::to_string(entries) +
+           " entries (sum of the domain sizes), more than 2^26";
+  }
+  return "";
+}
+
+void TabuSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
+                            const SolveContext& context, SolverResult& result) {
+  if (std::string why = unsuitable_reason(problem); !why.empty()) {
+    throw std::invalid_argument(name_ + ": " + why);
+  }
+  Budget budget(context.limits, 16);
+  result.solutions_at_best = 0;
+  const SolveLimits& l = context.limits;
+  const bool unlimited = l.max_evaluations == 0 && l.max_iterations == 0 &&
+                         !(l.time_limit_seconds > 0);
+  detail::run_tabu_search(problem, start, options_, context.seed, unlimited, budget, result);
+  finish_result(problem, context, budget, result);
+}
+
+}  // namespace sightline::solvers
