@@ -26,6 +26,10 @@ const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
               "scan every variable's moves when the table has at most this many entries, "
               "else only the variables in a violated constraint (>= 0)",
               0);
+    s.real("hard_weight", &Options::hard_weight,
+           "rank moves by hard_weight x hard + soft (a penalty); 0 = hard first; -1 = adaptive "
+           "(strategic oscillation)",
+           -1);
     s.boolean("stop_at_zero", &Options::stop_at_zero, "stop at a zero-cost feasible assignment");
     return s;
   }();
@@ -45,6 +49,10 @@ std::string TabuSolver::Options::validate() const {
     return "perturbation must be in (0, 1], got " + detail::format_real(perturbation);
   }
   if (restarts < -1) return "restarts must be >= -1 (-1 = no cap), got " + std::to_string(restarts);
+  if (!(hard_weight >= 0 || hard_weight == -1)) {
+    return "hard_weight must be >= 0 (0 = lexicographic) or -1 (adaptive), got " +
+           detail::format_real(hard_weight);
+  }
   if (scan_all_below < 0) {
     return "scan_all_below must be >= 0, got " + std::to_string(scan_all_below);
   }

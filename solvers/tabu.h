@@ -3,7 +3,14 @@
 //
 // Local search for optimisation, not only satisfaction: every step moves one variable to
 // another value, the best admissible move over the candidates, judged by its exact change
-// of the (hard, soft) score, compared lexicographically as csp::Score does (hard first).
+// of the (hard, soft) score. How hard and soft parts are weighed against each other when
+// ranking moves is `hard_weight`: 0 ranks lexicographically as csp::Score does (hard
+// first); w > 0 ranks by w x hard + soft; -1 (default) adapts w (strategic oscillation):
+// it starts at the mean soft change of a move, doubles after a period of max(10, variables)
+// moves spent wholly infeasible and halves after one spent wholly feasible, so the search
+// may cross infeasible ground (a store sent to a closed warehouse, which then pays to open)
+// instead of being walled in by hard constraints. The best assignment is always judged
+// lexicographically: only a feasible one beats a feasible best.
 // The change of every (variable, value) pair is kept in a table updated move by move
 // (detail/move_table.h: a move of v only touches the rows of v's neighbours, through the
 // constraints they share), so choosing the best move is a scan of the table, not a
@@ -45,14 +52,16 @@ namespace sightline::solvers {
 class TabuSolver : public Solver {
  public:
   struct Options {
-    std::int64_t tenure_min = 5;     // shortest tabu tenure, steps (>= 0)
-    std::int64_t tenure_max = 20;    // longest tabu tenure, steps (>= tenure_min)
+    std::int64_t tenure_min = 2;     // shortest tabu tenure, steps (>= 0)
+    std::int64_t tenure_max = 10;    // longest tabu tenure, steps (>= tenure_min)
     std::int64_t stall_moves = 0;    // steps without a new best before a perturbation;
                                      // 0 = auto (100 x variables, at least 2000)
     double perturbation = 0.1;       // fraction of the variables a perturbation changes, (0, 1]
     std::int64_t restarts = -1;      // cap on perturbations; -1 = none when a limit is set
     std::int64_t scan_all_below = 100000;  // scan every variable when the table is this small
     bool stop_at_zero = true;        // stop at a zero-cost feasible assignment
+    double hard_weight = -1;         // moves ranked by hard_weight x hard + soft; 0 = hard
+                                     // first (lexicographic); -1 = adaptive
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;

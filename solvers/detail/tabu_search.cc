@@ -1,6 +1,7 @@
 #include "solvers/detail/tabu_search.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ class TabuSearch {
     if (n_ > 0 && rebuild(best_)) {
       best_score_ = table_.score();
       tabu_until_.assign(table_.entries(), 0);
+      start_penalty();
       scan_all_ = table_.entries() <= static_cast<std::uint64_t>(options_.scan_all_below);
       std::uint64_t fruitless = 0;  // perturbations in a row without a new best
       while (!stopped_) {
@@ -87,6 +89,47 @@ class TabuSearch {
     return true;
   }
 
+  // Move order: lexicographic (csp::Score) when hard_weight is 0, else by the penalty
+  // hard_weight x hard + soft.
+  bool prefer(const csp::Score& a, const csp::Score& b) const {
+    if (penalty_ <= 0) return a.better_than(b);
+    const double pa = penalty_ * a.hard + a.soft;
+    const double pb = penalty_ * b.hard + b.soft;
+    return pa < pb - 1e-12 * (1 + std::abs(pb));
+  }
+
+  // The penalty weight: fixed (hard_weight > 0), none (0), or adaptive (< 0), starting at
+  // the mean soft change of a move (hard violations then count like a typical move).
+  void start_penalty() {
+    penalty_ = options_.hard_weight;
+    if (penalty_ >= 0) return;
+    double sum = 0;
+    std::size_t count = 0;
+    for (csp::VariableId v = 0; v < n_; ++v) {
+      for (const csp::Score& change : table_.row(v)) {
+        if (change.soft != 0) {
+          sum += std::abs(change.soft);
+          ++count;
+        }
+      }
+    }
+    penalty_ = count ? sum / static_cast<double>(count) : 1.0;
+  }
+
+  // Strategic oscillation: over each period of max(10, variables) moves, a search that was
+  // never feasible doubles the penalty (feasibility matters more), one that was always
+  // feasible halves it (it may cross infeasible ground to reach other feasible regions).
+  void oscillate() {
+    (table_.score().feasible() ? feasible_steps_ : infeasible_steps_) += 1;
+    if (feasible_steps_ + infeasible_steps_ < std::max<std::size_t>(10, n_)) return;
+    if (feasible_steps_ == 0) {
+      penalty_ *= 2;
+    } else if (infeasible_steps_ == 0) {
+      penalty_ = std::max(penalty_ / 2, 1e-9);
+    }
+    feasible_steps_ = infeasible_steps_ = 0;
+  }
+
   // Keeps the best admissible move of v's row in chosen_var_ / chosen_index_ / chosen (ties:
   // one of them uniformly at random, by reservoir sampling over `ties`).
   void consider_row(csp::VariableId v, const csp::Score& current, csp::Score& chosen,
@@ -100,10 +143,10 @@ class TabuSearch {
       const bool admissible = tabu_until_[first + a] <= iterations_ ||
                               (current + change).better_than(best_score_);  // aspiration
       if (!admissible) continue;
-      if (chosen_var_ == kNone || change.better_than(chosen)) {
+      if (chosen_var_ == kNone || prefer(change, chosen)) {
         chosen = change;
         ties = 1;
-      } else if (chosen.better_than(change) || random_.index(++ties) != 0) {
+      } else if (prefer(chosen, change) || random_.index(++ties) != 0) {
         continue;
       }
       chosen_var_ = v;
@@ -143,6 +186,7 @@ class TabuSearch {
     evaluations_ += table_.move_work(chosen_var_);
     table_.move(chosen_var_, chosen_index_);
     ++iterations_;
+    if (options_.hard_weight < 0) oscillate();
     const auto tenure = static_cast<std::uint64_t>(
         options_.tenure_min +
         static_cast<std::int64_t>(random_.index(
@@ -189,6 +233,8 @@ class TabuSearch {
   std::vector<std::uint64_t> tabu_until_;  // per (variable, value): step until which it is tabu
   std::vector<csp::VariableId> order_;
   bool scan_all_ = true;
+  double penalty_ = 0;  // weight of hard violations in move ranking; 0 = lexicographic
+  std::uint64_t feasible_steps_ = 0, infeasible_steps_ = 0;
   csp::VariableId chosen_var_ = kNone;
   std::uint32_t chosen_index_ = 0;
   csp::Assignment best_;
