@@ -20,7 +20,7 @@ MoveTable::MoveTable(const csp::Problem& problem) : problem_(problem) {
   rows_.assign(offset_.back(), csp::Score{});
   move_work_.assign(n, 0);
   for (csp::VariableId v = 0; v < n; ++v) {
-    std::uint64_t work = domain_size(v);
+    std::uint64_t work = 0;
     for (const csp::Incidence& inc : problem.incidences(v)) {
       for (csp::VariableId u : problem.constraint(inc.constraint).scope()) {
         if (u != v) work += domain_size(u);
@@ -100,10 +100,12 @@ void MoveTable::fill_row(csp::VariableId var) {
   const std::uint32_t current = index_[var];
   for (const csp::Incidence& inc : problem_.incidences(var)) {
     const double w = weights_[inc.constraint];
+    const double here = violations_[inc.constraint];
     double csp::Score::*part = hard_[inc.constraint] ? &csp::Score::hard : &csp::Score::soft;
     for (std::uint32_t a = 0; a < d; ++a) {
-      if (a == current) continue;
-      row[a].*part += w * constraint_delta(inc.constraint, inc.position, value_at(var, a));
+      const double change =
+          a == current ? 0.0 : constraint_delta(inc.constraint, inc.position, value_at(var, a));
+      row[a].*part += w * (here + change);
     }
   }
 }
@@ -111,6 +113,7 @@ void MoveTable::fill_row(csp::VariableId var) {
 void MoveTable::add_neighbour_parts(csp::ConstraintId c, csp::VariableId mover, double sign) {
   const auto scope = problem_.constraint(c).scope();
   const double w = sign * weights_[c];
+  const double here = violations_[c];
   double csp::Score::*part = hard_[c] ? &csp::Score::hard : &csp::Score::soft;
   for (std::uint32_t q = 0; q < scope.size(); ++q) {
     const csp::VariableId u = scope[q];
@@ -119,8 +122,8 @@ void MoveTable::add_neighbour_parts(csp::ConstraintId c, csp::VariableId mover, 
     const std::uint32_t d = static_cast<std::uint32_t>(domain_size(u));
     const std::uint32_t current = index_[u];
     for (std::uint32_t b = 0; b < d; ++b) {
-      if (b == current) continue;
-      row[b].*part += w * constraint_delta(c, q, value_at(u, b));
+      const double change = b == current ? 0.0 : constraint_delta(c, q, value_at(u, b));
+      row[b].*part += w * (here + change);
     }
   }
 }
@@ -146,7 +149,7 @@ void MoveTable::move(csp::VariableId var, std::uint32_t index) {
   }
   violations_scratch_.clear();
   for (const csp::Incidence& inc : incidences) add_neighbour_parts(inc.constraint, var, +1);
-  fill_row(var);
+  // var's own row does not change: it depends on the other variables only.
 }
 
 }  // namespace sightline::solvers::detail

@@ -3,17 +3,18 @@
 // weighted CSPs (as in Galinier & Hao's tabu for graph colouring and toulbar2-style local
 // search, with the delta of every (variable, value) pair at hand).
 //
-// row(v)[a] = score(x with v = a) - score(x), for every variable v and every value index a
-// of its domain (0 for the current value). Moving v changes the rows of v and of the
-// variables that share a constraint with v, and only through those constraints. So a move
-// of v, for each constraint c on v and each other variable u of c, takes c's part out of
-// u's row before the change and puts the new part back after it:
-//     row(u)[b] += w_c (delta_c(u -> b) after - delta_c(u -> b) before)
-// which costs (arity - 1) x |D(u)| constraint deltas per constraint, not a row rebuild
-// (|D(u)| x every constraint of u). v's own row is rebuilt. Each delta comes from the
-// constraint's IncrementalState (O(1) for a table), or from violation() with the variable
-// changed when the kind offers none. Hard and soft parts are kept apart (csp::Score), so
-// moves compare lexicographically as csp::Score does.
+// row(v)[a] = the (hard, soft) cost of the constraints on v if v took its a-th value, the
+// other variables as they are; the score change of that move is row(v)[a] - row(v)[current].
+// A row depends on the other variables only, so moving v leaves v's own row as it is: the
+// move changes the rows of the variables that share a constraint with v, and only through
+// those constraints. So a move of v, for each constraint c on v and each other variable u of
+// c, takes c's part out of u's row before the change and puts the new part back after it:
+//     row(u)[b] += w_c (cost_c(u = b) after - cost_c(u = b) before)
+// which costs (arity - 1) x |D(u)| constraint deltas per constraint, not a rebuild of rows
+// (|D(u)| x every constraint of u). Each delta comes from the constraint's IncrementalState
+// (O(1) for a table), or from violation() with the variable changed when the kind offers
+// none. Hard and soft parts are kept apart (csp::Score), so moves compare lexicographically
+// as csp::Score does, or by any weighting of the two.
 //
 // With real-valued costs the updates add round-off; rebuild() recomputes everything from
 // scratch (the search calls it at each restart). It also keeps, per variable, how many of
@@ -43,7 +44,7 @@ class MoveTable {
   const csp::Assignment& values() const { return values_; }
   std::uint32_t index_of(csp::VariableId var) const { return index_[var]; }
   std::size_t domain_size(csp::VariableId var) const { return offset_[var + 1] - offset_[var]; }
-  // The score change of every value of `var`, by value index.
+  // The cost of var's constraints for every value of `var`, by value index (see above).
   std::span<const csp::Score> row(csp::VariableId var) const {
     return {rows_.data() + offset_[var], rows_.data() + offset_[var + 1]};
   }
@@ -54,6 +55,10 @@ class MoveTable {
   std::size_t slot(csp::VariableId var, std::uint32_t index) const { return offset_[var] + index; }
   // Variables in at least one violated constraint, in no particular order.
   std::span<const csp::VariableId> conflicting() const { return conflicting_; }
+  // The score change if `var` took its value `index`.
+  csp::Score change(csp::VariableId var, std::uint32_t index) const {
+    return rows_[offset_[var] + index] - rows_[offset_[var] + index_[var]];
+  }
   // Row entries a rebuild, or a move of `var`, (re)computes: what the search counts as
   // evaluations, known before the work so that limits can be kept exactly.
   std::uint64_t rebuild_work() const { return offset_.back(); }

@@ -106,9 +106,11 @@ class TabuSearch {
     double sum = 0;
     std::size_t count = 0;
     for (csp::VariableId v = 0; v < n_; ++v) {
-      for (const csp::Score& change : table_.row(v)) {
-        if (change.soft != 0) {
-          sum += std::abs(change.soft);
+      const auto row = table_.row(v);
+      const double here = row[table_.index_of(v)].soft;
+      for (const csp::Score& cost : row) {
+        if (cost.soft != here) {
+          sum += std::abs(cost.soft - here);
           ++count;
         }
       }
@@ -136,10 +138,11 @@ class TabuSearch {
                     std::size_t& ties) {
     const auto row = table_.row(v);
     const std::uint32_t here = table_.index_of(v);
+    const csp::Score at_here = row[here];
     const std::size_t first = table_.slot(v, 0);
     for (std::uint32_t a = 0; a < row.size(); ++a) {
       if (a == here) continue;
-      const csp::Score& change = row[a];
+      const csp::Score change = row[a] - at_here;
       const bool admissible = tabu_until_[first + a] <= iterations_ ||
                               (current + change).better_than(best_score_);  // aspiration
       if (!admissible) continue;

@@ -64,8 +64,10 @@ void expect_table_matches_rescoring(const csp::Problem& p, int moves) {
         x[v] = table.value_at(v, a);
         const csp::Score moved = p.score(x);
         x[v] = old;
-        ASSERT_NEAR(row[a].hard, moved.hard - here.hard, 1e-9) << v << "=" << a << " step " << step;
-        ASSERT_NEAR(row[a].soft, moved.soft - here.soft, 1e-9) << v << "=" << a << " step " << step;
+        const csp::Score change = table.change(v, a);
+        ASSERT_NEAR(change.hard, moved.hard - here.hard, 1e-9) << v << "=" << a << " step " << step;
+        ASSERT_NEAR(change.soft, moved.soft - here.soft, 1e-9) << v << "=" << a << " step " << step;
+        ASSERT_NEAR(row[a].hard - row[table.index_of(v)].hard, change.hard, 1e-9);
       }
     }
     const auto v = static_cast<csp::VariableId>(rng() % p.num_variables());
