@@ -125,8 +125,8 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   if (!bnb_) bnb_ = SolverRegistry::global().create("bnb");
   Budget budget(context.limits, 1);  // a step costs far more than reading the clock
   const SolveLimits& limits = context.limits;
-  const bool unlimited = limits.max_evaluations == 0 && limits.max_iterations == 0 &&
-                         !(limits.time_limit_seconds > 0);
+  const bool unlimited =
+      limits.max_evaluations == 0 && limits.max_iterations == 0 && !(limits.time_limit_seconds > 0);
   detail::Random random(context.seed);
   const std::size_t n = problem.num_variables();
   csp::Assignment current;
@@ -190,9 +190,12 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
 
   csp::Assignment best = evaluator.values();
   csp::Score best_score = evaluator.score();
-  const std::size_t min_size = std::min<std::size_t>(n, static_cast<std::size_t>(options_.min_size));
+  const std::size_t min_size =
+      std::min<std::size_t>(n, static_cast<std::size_t>(options_.min_size));
   const std::size_t max_size =
-      options_.max_size == 0 ? n : std::min<std::size_t>(n, static_cast<std::size_t>(options_.max_size));
+      options_.max_size == 0
+          ? n
+          : std::min<std::size_t>(n, static_cast<std::size_t>(options_.max_size));
   const std::int64_t round_cap =
       options_.rounds >= 0 ? options_.rounds : (unlimited ? kUnlimitedRounds : -1);
   std::size_t size = min_size;
@@ -249,8 +252,9 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
                   sub_result.stop == StopReason::kCompleted)) {
       // bnb searched the whole problem to the end from the current bound.
       stop = best_score.feasible() ? StopReason::kProvenOptimal : StopReason::kCompleted;
-      note = best_score.feasible() ? "; proved optimal (the neighbourhood was the whole problem)"
-                                   : "; proved infeasible (the neighbourhood was the whole problem)";
+      note = best_score.feasible()
+                 ? "; proved optimal (the neighbourhood was the whole problem)"
+                 : "; proved infeasible (the neighbourhood was the whole problem)";
       break;
     }
   }

@@ -40,13 +40,13 @@ namespace sightline::solvers {
 class LnsSolver : public Solver {
  public:
   struct Options {
-    std::int64_t min_size = 4;         // smallest neighbourhood, variables (>= 1)
-    std::int64_t max_size = 0;         // largest neighbourhood; 0 = every variable
-    std::int64_t node_limit = 10000;   // bnb nodes per neighbourhood (>= 1)
-    std::int64_t rounds = -1;          // cap on rounds without improvement; -1 = none when a
-                                       // limit is set (3 without)
-    bool greedy_start = true;          // one greedy pass over the start first
-    double tabu_seconds = 0;           // run `tabu` this long first (0 = not at all)
+    std::int64_t min_size = 4;        // smallest neighbourhood, variables (>= 1)
+    std::int64_t max_size = 0;        // largest neighbourhood; 0 = every variable
+    std::int64_t node_limit = 10000;  // bnb nodes per neighbourhood (>= 1)
+    std::int64_t rounds = -1;         // cap on rounds without improvement; -1 = none when a
+                                      // limit is set (3 without)
+    bool greedy_start = true;         // one greedy pass over the start first
+    double tabu_seconds = 0;          // run `tabu` this long first (0 = not at all)
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;

@@ -81,8 +81,8 @@ void TabuSolver::solve_into(const csp::Problem& problem, std::span<const double>
   Budget budget(context.limits, 16);
   result.solutions_at_best = 0;
   const SolveLimits& l = context.limits;
-  const bool unlimited = l.max_evaluations == 0 && l.max_iterations == 0 &&
-                         !(l.time_limit_seconds > 0);
+  const bool unlimited =
+      l.max_evaluations == 0 && l.max_iterations == 0 && !(l.time_limit_seconds > 0);
   detail::run_tabu_search(problem, start, options_, context.seed, unlimited, budget, result);
   finish_result(problem, context, budget, result);
 }

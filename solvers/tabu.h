@@ -52,16 +52,16 @@ namespace sightline::solvers {
 class TabuSolver : public Solver {
  public:
   struct Options {
-    std::int64_t tenure_min = 2;     // shortest tabu tenure, steps (>= 0)
-    std::int64_t tenure_max = 10;    // longest tabu tenure, steps (>= tenure_min)
-    std::int64_t stall_moves = 0;    // steps without a new best before a perturbation;
-                                     // 0 = auto (100 x variables, at least 2000)
-    double perturbation = 0.1;       // fraction of the variables a perturbation changes, (0, 1]
-    std::int64_t restarts = -1;      // cap on perturbations; -1 = none when a limit is set
+    std::int64_t tenure_min = 2;   // shortest tabu tenure, steps (>= 0)
+    std::int64_t tenure_max = 10;  // longest tabu tenure, steps (>= tenure_min)
+    std::int64_t stall_moves = 0;  // steps without a new best before a perturbation;
+                                   // 0 = auto (100 x variables, at least 2000)
+    double perturbation = 0.1;     // fraction of the variables a perturbation changes, (0, 1]
+    std::int64_t restarts = -1;    // cap on perturbations; -1 = none when a limit is set
     std::int64_t scan_all_below = 100000;  // scan every variable when the table is this small
-    bool stop_at_zero = true;        // stop at a zero-cost feasible assignment
-    double hard_weight = -1;         // moves ranked by hard_weight x hard + soft; 0 = hard
-                                     // first (lexicographic); -1 = adaptive
+    bool stop_at_zero = true;              // stop at a zero-cost feasible assignment
+    double hard_weight = -1;               // moves ranked by hard_weight x hard + soft; 0 = hard
+                                           // first (lexicographic); -1 = adaptive
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;

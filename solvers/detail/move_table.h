@@ -86,7 +86,7 @@ class MoveTable {
   std::vector<double> violations_scratch_;  // move(): each constraint's change
   std::vector<double> weights_;
   std::vector<char> hard_;
-  std::vector<std::uint32_t> violated_on_;  // per variable: its violated constraints
+  std::vector<std::uint32_t> violated_on_;    // per variable: its violated constraints
   std::vector<std::uint32_t> conflict_slot_;  // per variable: place in conflicting_, or ~0
   std::vector<csp::VariableId> conflicting_;
   csp::Score total_;

@@ -56,7 +56,8 @@ class TabuSearch {
         strength = fruitless == 0 ? base_strength : std::min(n_, strength + strength / 2 + 1);
         if ((options_.restarts >= 0 &&
              perturbations_ >= static_cast<std::uint64_t>(options_.restarts)) ||
-            (unlimited_ && options_.restarts < 0 && fruitless >= kUnlimitedFruitlessPerturbations)) {
+            (unlimited_ && options_.restarts < 0 &&
+             fruitless >= kUnlimitedFruitlessPerturbations)) {
           stop_ = StopReason::kCompleted;
           break;
         }
@@ -191,9 +192,8 @@ class TabuSearch {
     ++iterations_;
     if (options_.hard_weight < 0) oscillate();
     const auto tenure = static_cast<std::uint64_t>(
-        options_.tenure_min +
-        static_cast<std::int64_t>(random_.index(
-            static_cast<std::size_t>(options_.tenure_max - options_.tenure_min + 1))));
+        options_.tenure_min + static_cast<std::int64_t>(random_.index(static_cast<std::size_t>(
+                                  options_.tenure_max - options_.tenure_min + 1))));
     tabu_until_[table_.slot(chosen_var_, left)] = iterations_ + tenure;
     if (table_.score().better_than(best_score_)) {
       best_score_ = table_.score();

@@ -117,7 +117,9 @@ SolverResult run(const std::string& solver, const csp::Problem& p, std::uint64_t
   SolveContext context;
   context.seed = seed;
   context.limits.max_iterations = iterations;
-  return SolverRegistry::global().create(solver, options)->solve(p, p.default_assignment(), context);
+  return SolverRegistry::global()
+      .create(solver, options)
+      ->solve(p, p.default_assignment(), context);
 }
 
 class WeightedLocalSearch : public ::testing::TestWithParam<std::string> {
