@@ -112,6 +112,54 @@ TEST(ConditionedProblem, ScoresLikeTheFullProblemUpToTheFixedPartsConstant) {
   }
 }
 
+TEST(ConditionedProblem, BnbOnItFindsTheBestCompletionFoundByEnumeration) {
+  // bnb's bounds read min_violation through the views: a view that bounded wrongly (ignoring
+  // the fixed part, or over-estimating) would prune the best completion away.
+  const auto p = instance("golomb4.wcsp");  // ternary tables and an all_different
+  std::mt19937_64 rng(11);
+  auto bnb = SolverRegistry::global().create("bnb");
+  // Fixed parts taken from an optimal assignment, so that completions exist; the free
+  // variables start at random values.
+  const csp::Assignment optimum = bnb->solve(*p, p->default_assignment()).best;
+  for (int trial = 0; trial < 8; ++trial) {
+    csp::Assignment base = optimum;
+    std::vector<csp::VariableId> free;
+    while (free.size() < 6) {
+      const auto v = static_cast<csp::VariableId>(rng() % p->num_variables());
+      if (std::find(free.begin(), free.end(), v) == free.end()) free.push_back(v);
+    }
+    for (csp::VariableId v : free) {
+      const csp::Domain& d = p->variable(v).domain;
+      base[v] = d.value_at(rng() % d.size());
+    }
+    // Enumeration over the free variables of the full problem.
+    csp::Score best{1e300, 1e300};
+    csp::Assignment x = base;
+    std::vector<std::size_t> index(free.size(), 0);
+    while (true) {
+      for (std::size_t i = 0; i < free.size(); ++i) {
+        x[free[i]] = p->variable(free[i]).domain.value_at(index[i]);
+      }
+      const csp::Score s = p->score(x);
+      if (s.better_than(best)) best = s;
+      std::size_t i = 0;
+      while (i < free.size() && ++index[i] == p->variable(free[i]).domain.size()) index[i++] = 0;
+      if (i == free.size()) break;
+    }
+    detail::ConditionedProblem conditioned(*p, base, free);
+    SolveContext context;
+    context.want_breakdown = false;
+    const SolverResult r = bnb->solve(conditioned.problem(), conditioned.restrict(base), context);
+    csp::Assignment found = base;
+    conditioned.extend(r.best, found);
+    const csp::Score s = p->score(found);
+    ASSERT_TRUE(best.feasible());
+    EXPECT_EQ(r.stop, StopReason::kProvenOptimal) << r.brief_report("bnb");
+    EXPECT_EQ(s.hard, 0);
+    EXPECT_EQ(s.soft, best.soft) << "trial " << trial;
+  }
+}
+
 SolverResult run(const std::string& solver, const csp::Problem& p, std::uint64_t iterations,
                  std::uint64_t seed = 1, const OptionValues& options = {}) {
   SolveContext context;
