@@ -1,5 +1,7 @@
 #include "solvers/tabu.h"
 
+#include <algorithm>
+
 #include "solvers/detail/tabu_search.h"
 
 namespace sightline::solvers {
@@ -78,7 +80,22 @@ void TabuSolver::solve_into(const csp::Problem& problem, std::span<const double>
   if (std::string why = unsuitable_reason(problem); !why.empty()) {
     throw std::invalid_argument(name_ + ": " + why);
   }
-  Budget budget(context.limits, 16);
+  // The clock is read every `stride` moves: about every 2,000 table entries of work, so a
+  // time limit holds when moves are expensive (a 1000-queens all_different: 10^6 entries)
+  // and costs nothing noticeable when they are cheap.
+  double total_work = 0;
+  for (csp::ConstraintId c = 0; c < problem.num_constraints(); ++c) {
+    const auto scope = problem.constraint(c).scope();
+    for (csp::VariableId u : scope) {
+      total_work += static_cast<double>(problem.variable(u).domain.size()) *
+                    static_cast<double>(scope.size() - 1);
+    }
+  }
+  const double move_work =
+      total_work / static_cast<double>(std::max<std::size_t>(1, problem.num_variables()));
+  const auto stride =
+      static_cast<unsigned>(std::clamp(2048.0 / std::max(1.0, move_work), 1.0, 64.0));
+  Budget budget(context.limits, stride);
   result.solutions_at_best = 0;
   const SolveLimits& l = context.limits;
   const bool unlimited =
