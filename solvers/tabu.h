@@ -36,7 +36,7 @@
 // 0.41 s, step 5123") and how many perturbations were made.
 //
 // Iterations count moves; evaluations count the table entries computed (a rebuild computes
-// every (variable, value) entry; a move of v its row and its neighbours' rows' entries).
+// every (variable, value) entry; a move of v its neighbours' rows' entries).
 // Deterministic for a given seed. Discrete domains only.
 #pragma once
 
