@@ -1,4 +1,4 @@
-// wcsp_table: sls, bnb and sls>bnb against toulbar2 on .wcsp instances, as a Markdown table
+// wcsp_table: sls, bnb, sls>bnb, tabu and lns against toulbar2 on .wcsp instances, as a Markdown table
 // (the one in docs/BENCHMARKS.md).
 //
 //   wcsp_table [--runs N] [--time-limit S] [--toulbar2 PATH] FILE.wcsp...
@@ -135,9 +135,9 @@ int main(int argc, char** argv) {
   app.add_option("files", files, ".wcsp files")->required();
   CLI11_PARSE(app, argc, argv);
 
-  std::cout << "| instance | optimum | sls | time | bnb | time | sls>bnb | time | toulbar2 | "
-               "its time | wall |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout << "| instance | optimum | sls | time | bnb | time | sls>bnb | time | tabu | time | "
+               "lns | time | toulbar2 | its time | wall |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const std::string& path : files) {
     std::unique_ptr<csp::Problem> problem;
     try {
@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
     std::string name = std::filesystem::path(path).filename().string();
     name = name.substr(0, name.find(".wcsp"));
     std::cout << "| " << name << " | " << known_optimum(path);
-    for (const char* solver : {"sls", "bnb", "sls>bnb"}) {
+    for (const char* solver : {"sls", "bnb", "sls>bnb", "tabu", "lns"}) {
       const Cell c = run_ours(*problem, solver, runs, limit);
       std::cout << " | " << c.cost << " | " << seconds(c.time);
     }

@@ -3,8 +3,10 @@
 #include "solvers/bnb.h"
 #include "solvers/ceres_refine.h"
 #include "solvers/grid.h"
+#include "solvers/lns.h"
 #include "solvers/sliding_octree.h"
 #include "solvers/sls.h"
+#include "solvers/tabu.h"
 
 namespace sightline::solvers {
 
@@ -20,6 +22,10 @@ void register_builtin_solvers(SolverRegistry& registry) {
       "exact depth-first branch and bound with forward checking (discrete); proves optimality");
   register_solver<CeresRefineSolver>(registry, "ceres-refine",
       "Ceres L-BFGS refinement of the continuous variables; never worse than its start");
+  register_solver<TabuSolver>(registry, "tabu",
+      "tabu search on exact weighted deltas, move table kept incrementally (discrete); anytime");
+  register_solver<LnsSolver>(registry, "lns",
+      "large-neighbourhood search: neighbourhoods along the constraint graph solved by bnb");
 }
 
 }  // namespace sightline::solvers

@@ -1,0 +1,261 @@
+#include "solvers/detail/tabu_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "solvers/detail/move_table.h"
+#include "solvers/detail/random.h"
+#include "solvers/detail/start.h"
+
+namespace sightline::solvers::detail {
+
+namespace {
+
+// Without any limit, the search ends after this many perturbations in a row that bring no
+// new best (a bare call must end; with a limit the search uses all of it instead).
+constexpr std::uint64_t kUnlimitedFruitlessPerturbations = 10;
+
+class TabuSearch {
+ public:
+  TabuSearch(const csp::Problem& problem, const TabuSolver::Options& options, std::uint64_t seed,
+             bool unlimited, Budget& budget)
+      : problem_(problem),
+        options_(options),
+        unlimited_(unlimited),
+        budget_(budget),
+        random_(seed),
+        table_(problem),
+        n_(problem.num_variables()) {}
+
+  void run(std::span<const double> start, SolverResult& result) {
+    prepare_start(problem_, start, best_);
+    const std::uint64_t stall_limit =
+        options_.stall_moves > 0
+            ? static_cast<std::uint64_t>(options_.stall_moves)
+            : std::max<std::uint64_t>(2000, 100 * static_cast<std::uint64_t>(n_));
+    const std::size_t base_strength = std::max<std::size_t>(
+        2, static_cast<std::size_t>(options_.perturbation * static_cast<double>(n_)));
+    std::size_t strength = base_strength;
+    if (n_ > 0 && rebuild(best_)) {
+      best_score_ = table_.score();
+      tabu_until_.assign(table_.entries(), 0);
+      start_penalty();
+      scan_all_ = table_.entries() <= static_cast<std::uint64_t>(options_.scan_all_below);
+      std::uint64_t fruitless = 0;  // perturbations in a row without a new best
+      while (!stopped_) {
+        const std::uint64_t last_best = best_step_;
+        const std::uint64_t run_start = iterations_;
+        while (!stopped_ && iterations_ - std::max(run_start, best_step_) < stall_limit) {
+          step();
+        }
+        if (stopped_) break;
+        fruitless = best_step_ > last_best ? 0 : fruitless + 1;
+        strength = fruitless == 0 ? base_strength : std::min(n_, strength + strength / 2 + 1);
+        if ((options_.restarts >= 0 &&
+             perturbations_ >= static_cast<std::uint64_t>(options_.restarts)) ||
+            (unlimited_ && options_.restarts < 0 &&
+             fruitless >= kUnlimitedFruitlessPerturbations)) {
+          stop_ = StopReason::kCompleted;
+          break;
+        }
+        perturb(strength);
+      }
+    } else if (n_ == 0) {
+      best_score_ = problem_.score(best_);
+    }
+    result.best = best_;
+    result.evaluations = evaluations_;
+    result.iterations = iterations_;
+    result.stop = stop_;
+    char text[160];
+    std::snprintf(text, sizeof text, "best found at %.3f s, step %llu; %llu perturbations",
+                  best_seconds_, static_cast<unsigned long long>(best_step_),
+                  static_cast<unsigned long long>(perturbations_));
+    result.message = text;
+  }
+
+ private:
+  // Rebuilds the table on `values` if the budget allows it (else stops).
+  bool rebuild(const csp::Assignment& values) {
+    if (budget_.exhausted(evaluations_ + table_.rebuild_work(), iterations_)) {
+      stop_ = budget_.reason();
+      stopped_ = true;
+      return false;
+    }
+    evaluations_ += table_.rebuild_work();
+    table_.rebuild(values);
+    return true;
+  }
+
+  // Move order: lexicographic (csp::Score) when hard_weight is 0, else by the penalty
+  // hard_weight x hard + soft.
+  bool prefer(const csp::Score& a, const csp::Score& b) const {
+    if (penalty_ <= 0) return a.better_than(b);
+    const double pa = penalty_ * a.hard + a.soft;
+    const double pb = penalty_ * b.hard + b.soft;
+    return pa < pb - 1e-12 * (1 + std::abs(pb));
+  }
+
+  // The penalty weight: fixed (hard_weight > 0), none (0), or adaptive (< 0), starting at
+  // the mean soft change of a move (hard violations then count like a typical move).
+  void start_penalty() {
+    penalty_ = options_.hard_weight;
+    if (penalty_ >= 0) return;
+    double sum = 0;
+    std::size_t count = 0;
+    for (csp::VariableId v = 0; v < n_; ++v) {
+      const auto row = table_.row(v);
+      const double here = row[table_.index_of(v)].soft;
+      for (const csp::Score& cost : row) {
+        if (cost.soft != here) {
+          sum += std::abs(cost.soft - here);
+          ++count;
+        }
+      }
+    }
+    penalty_ = count ? sum / static_cast<double>(count) : 1.0;
+  }
+
+  // Strategic oscillation: over each period of max(10, variables) moves, a search that was
+  // never feasible doubles the penalty (feasibility matters more), one that was always
+  // feasible halves it (it may cross infeasible ground to reach other feasible regions).
+  void oscillate() {
+    (table_.score().feasible() ? feasible_steps_ : infeasible_steps_) += 1;
+    if (feasible_steps_ + infeasible_steps_ < std::max<std::size_t>(10, n_)) return;
+    if (feasible_steps_ == 0) {
+      penalty_ *= 2;
+    } else if (infeasible_steps_ == 0) {
+      penalty_ = std::max(penalty_ / 2, 1e-9);
+    }
+    feasible_steps_ = infeasible_steps_ = 0;
+  }
+
+  // Keeps the best admissible move of v's row in chosen_var_ / chosen_index_ / chosen (ties:
+  // one of them uniformly at random, by reservoir sampling over `ties`).
+  void consider_row(csp::VariableId v, const csp::Score& current, csp::Score& chosen,
+                    std::size_t& ties) {
+    const auto row = table_.row(v);
+    const std::uint32_t here = table_.index_of(v);
+    const csp::Score at_here = row[here];
+    const std::size_t first = table_.slot(v, 0);
+    for (std::uint32_t a = 0; a < row.size(); ++a) {
+      if (a == here) continue;
+      const csp::Score change = row[a] - at_here;
+      const bool admissible = tabu_until_[first + a] <= iterations_ ||
+                              (current + change).better_than(best_score_);  // aspiration
+      if (!admissible) continue;
+      if (chosen_var_ == kNone || prefer(change, chosen)) {
+        chosen = change;
+        ties = 1;
+      } else if (prefer(chosen, change) || random_.index(++ties) != 0) {
+        continue;
+      }
+      chosen_var_ = v;
+      chosen_index_ = a;
+    }
+  }
+
+  void step() {
+    const csp::Score current = table_.score();
+    if (options_.stop_at_zero && is_zero(current) && is_zero(problem_.score(table_.values()))) {
+      stop_ = StopReason::kTargetReached;
+      stopped_ = true;
+      return;
+    }
+    chosen_var_ = kNone;
+    csp::Score chosen;
+    std::size_t ties = 0;
+    if (scan_all_) {
+      for (csp::VariableId v = 0; v < n_; ++v) consider_row(v, current, chosen, ties);
+    } else {
+      for (csp::VariableId v : table_.conflicting()) consider_row(v, current, chosen, ties);
+    }
+    if (chosen_var_ == kNone) {  // every move is tabu (or no candidate): a random one
+      chosen_var_ = static_cast<csp::VariableId>(random_.index(n_));
+      chosen_index_ = static_cast<std::uint32_t>(random_.index(table_.domain_size(chosen_var_)));
+    }
+    if (budget_.exhausted(evaluations_ + table_.move_work(chosen_var_), iterations_)) {
+      stop_ = budget_.reason();
+      stopped_ = true;
+      return;
+    }
+    const std::uint32_t left = table_.index_of(chosen_var_);
+    if (left == chosen_index_) {  // a random pick that stays put: a wasted step
+      ++iterations_;
+      return;
+    }
+    evaluations_ += table_.move_work(chosen_var_);
+    table_.move(chosen_var_, chosen_index_);
+    ++iterations_;
+    if (options_.hard_weight < 0) oscillate();
+    const auto tenure = static_cast<std::uint64_t>(
+        options_.tenure_min + static_cast<std::int64_t>(random_.index(static_cast<std::size_t>(
+                                  options_.tenure_max - options_.tenure_min + 1))));
+    tabu_until_[table_.slot(chosen_var_, left)] = iterations_ + tenure;
+    if (table_.score().better_than(best_score_)) {
+      best_score_ = table_.score();
+      best_ = table_.values();
+      best_step_ = iterations_;
+      best_seconds_ = budget_.elapsed_seconds();
+    }
+  }
+
+  // From the best assignment, `strength` distinct random variables take random values.
+  void perturb(std::size_t strength) {
+    ++perturbations_;
+    csp::Assignment values = best_;
+    order_.resize(n_);
+    for (csp::VariableId v = 0; v < n_; ++v) order_[v] = v;
+    for (std::size_t k = 0; k < strength && k < n_; ++k) {
+      std::swap(order_[k], order_[k + random_.index(n_ - k)]);
+      const csp::VariableId v = order_[k];
+      const csp::Domain& d = problem_.variable(v).domain;
+      values[v] = d.value_at(random_.index(d.size()));
+    }
+    if (!rebuild(values)) return;
+    std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
+    if (table_.score().better_than(best_score_)) {
+      best_score_ = table_.score();
+      best_ = table_.values();
+      best_step_ = iterations_;
+      best_seconds_ = budget_.elapsed_seconds();
+    }
+  }
+
+  static constexpr csp::VariableId kNone = ~csp::VariableId{0};
+  const csp::Problem& problem_;
+  const TabuSolver::Options& options_;
+  const bool unlimited_;
+  Budget& budget_;
+  Random random_;
+  MoveTable table_;
+  const std::size_t n_;
+  std::vector<std::uint64_t> tabu_until_;  // per (variable, value): step until which it is tabu
+  std::vector<csp::VariableId> order_;
+  bool scan_all_ = true;
+  double penalty_ = 0;  // weight of hard violations in move ranking; 0 = lexicographic
+  std::uint64_t feasible_steps_ = 0, infeasible_steps_ = 0;
+  csp::VariableId chosen_var_ = kNone;
+  std::uint32_t chosen_index_ = 0;
+  csp::Assignment best_;
+  csp::Score best_score_;
+  std::uint64_t best_step_ = 0;
+  double best_seconds_ = 0;
+  std::uint64_t evaluations_ = 0, iterations_ = 0, perturbations_ = 0;
+  bool stopped_ = false;
+  StopReason stop_ = StopReason::kCompleted;
+};
+
+}  // namespace
+
+void run_tabu_search(const csp::Problem& problem, std::span<const double> start,
+                     const TabuSolver::Options& options, std::uint64_t seed, bool unlimited,
+                     Budget& budget, SolverResult& result) {
+  TabuSearch search(problem, options, seed, unlimited, budget);
+  search.run(start, result);
+}
+
+}  // namespace sightline::solvers::detail
