@@ -2,9 +2,12 @@
 # The main job, on an already built tree: the thesis comparison suite (Bourne & Sattar's
 # chase camera as published against Ali's occlusion-aware octree, the generic solvers and the
 # baselines, on the thesis scenes) into out/thesis, printing its Markdown summary; the report
-# is out/thesis/report.html. Then the toy-domain solver comparison.
+# is out/thesis/report.html. Then the same on walks through real Quake III maps (the levels
+# suite, out/levels). Then the toy-domain solver comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./build/apps/sightline run experiments/suites/thesis.yaml --out out/thesis
+echo
+./build/apps/sightline run experiments/suites/levels.yaml --out out/levels
 echo
 ./build/apps/sightline compare

@@ -10,9 +10,11 @@
 // through (constraints, the controller, the baselines, the metrics' fast paths, the report's
 // ray-cast views), whatever the source: boxes live in a BoxTree, the level's triangles in an
 // Embree index (TriangleIndex), each O(log n) per query, none allocating. Boxes stay in the
-// BoxTree rather than moving into Embree as 12 triangles each: the BoxTree is exact on
-// touching and grazing (closed boxes), gives signed distances inside a box, and measured
-// faster on box scenes (docs/BENCHMARKS.md, "Boxes: BoxTree or Embree").
+// BoxTree. Measured (docs/BENCHMARKS.md, "Boxes: BoxTree or Embree"), the same boxes as 12
+// triangles each in Embree answer sight lines about 3x and clearance 5-7x faster, but they
+// are hollow: a point inside a box is neither blocked nor "inside" (no signed distance, which
+// the clearance constraint's gradient and the keyframe checks need), and they build 10-14x
+// slower. Box scenes already run well inside the frame budget, so exactness won.
 //
 // Scenes are read from YAML by scene_file.h; the constructor takes already validated parts.
 #pragma once
