@@ -93,11 +93,12 @@ void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   }
   // Ending on the default restarts is not what the user asked for (anytime): say why.
   if (result.stop == StopReason::kCompleted && options_.restarts == 0 && cap != 0) {
-    result.message += !context.anytime
-                          ? "; the default restarts of a pipeline stage before the last "
-                            "(set restarts=N to change)"
-                          : "; no limit was set, so the default restarts (set a time limit, "
-                            "an evaluation or iteration limit, or restarts=N)";
+    result.message += "; " + std::to_string(kDefaultRestarts) +
+                      (!context.anytime
+                           ? " restarts is the default of a pipeline stage before the last: "
+                             "set restarts=N to change it"
+                           : " restarts is the default when no limit is set: give a time, "
+                             "evaluation or iteration limit, or restarts=N");
   }
   finish_result(problem, context, budget, result, scored);
 }
