@@ -5,6 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include "csp/files/compressed_text.h"
@@ -192,6 +193,7 @@ class CfnReader {
     if (static_cast<std::size_t>(size) > kMaxDomainSize) {
       fail(at, "not supported: domain size above 2^31 (" + name + ")");
     }
+    if (name.empty()) fail(at, "a variable needs a name (got \"\")");
     if (problem_->find_variable(name)) fail(at, "variable " + name + " is declared twice");
     problem_->add_variable(name, Domain::integer_range(0, size - 1));
     sizes_.push_back(size);
@@ -475,11 +477,15 @@ class CfnReader {
     if (f.scope.size() < 2) fail(f.at, "salldiff " + f.name + " needs at least 2 variables");
     if (c == 0) return;
     const bool hard = c >= ub_;
-    auto all_different = std::make_unique<AllDifferent>(
-        f.scope, std::vector<double>{}, *measure, hard ? 1.0 : c, hard,
-        key_range_from_domains(*problem_, f.scope, {}));
-    all_different->set_label(f.name + (hard ? "/hard" : ""));
-    problem_->add_constraint(std::move(all_different));
+    try {
+      auto all_different = std::make_unique<AllDifferent>(
+          f.scope, std::vector<double>{}, *measure, hard ? 1.0 : c, hard,
+          key_range_from_domains(*problem_, f.scope, {}));
+      all_different->set_label(f.name + (hard ? "/hard" : ""));
+      problem_->add_constraint(std::move(all_different));
+    } catch (const std::invalid_argument& e) {
+      fail(f.at, "salldiff " + f.name + ": " + e.what());
+    }
   }
 
   std::string_view text_;

@@ -184,6 +184,8 @@ TEST(CfnReader, RefusesMalformedFilesWithTheirPosition) {
       {with_function("{\"scope\": [\"a\"], \"defaultcost\": \"cheap\", \"costs\": []}"),
        "expected the default cost", 4},
       {"[1, 2]", "expected a JSON object", 0},
+      // Found by fuzz/cfn_fuzz: an empty variable name escaped as std::invalid_argument.
+      {head + "\"variables\": {\"\": 2}}", "needs a name", 2},
   };
   for (const BadCase& c : cases) {
     SCOPED_TRACE(c.text);
