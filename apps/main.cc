@@ -8,11 +8,14 @@
 #include "apps/commands.h"
 #include "apps/solve_options.h"
 #include "domains/camera/control/camera_solvers.h"
+#include "solvers/toulbar2/toulbar2_solver.h"
 
 int main(int argc, char** argv) {
   namespace apps = sightline::apps;
   // The camera's own solvers join the one registry, so every command can name them.
   sightline::camera::solver_registry();
+  // toulbar2 joins it when its program is installed (solvers/toulbar2/toulbar2_solver.h).
+  sightline::solvers::register_toulbar2_solver(sightline::solvers::SolverRegistry::global());
   CLI::App app{"sightline: weighted constraint satisfaction with pluggable solvers"};
   app.name("sightline");
   app.require_subcommand(1);

@@ -2,6 +2,7 @@
 
 #include <string_view>
 
+#include "csp/files/cfn_reader.h"
 #include "csp/files/problem_file.h"
 #include "csp/files/wcsp_reader.h"
 #include "csp/input_error.h"
@@ -34,9 +35,12 @@ std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOp
   if (ends_with(path, ".wcsp") || ends_with(path, ".wcsp.gz")) {
     return csp::read_wcsp_file(path);
   }
+  for (const char* suffix : {".cfn", ".cfn.gz", ".cfn.bz2", ".cfn.xz"}) {
+    if (ends_with(path, suffix)) return csp::read_cfn_file(path);
+  }
   throw csp::InputError({path, 0, 0},
                         "unknown problem file type (expected .yaml/.yml, .col with --colours K, "
-                        ".wcsp or .wcsp.gz)");
+                        ".wcsp or .wcsp.gz, .cfn or .cfn.gz/.bz2/.xz)");
 }
 
 }  // namespace sightline::apps

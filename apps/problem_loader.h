@@ -2,6 +2,7 @@
 //   .yaml / .yml        a problem file (csp/files/problem_file.h)
 //   .col                a DIMACS graph, coloured with `colours` colours (domains/colouring)
 //   .wcsp / .wcsp.gz    a toulbar2 weighted CSP (csp/files/wcsp_reader.h)
+//   .cfn (.gz/.bz2/.xz) the same in toulbar2's JSON format (csp/files/cfn_reader.h)
 // Anything else, a .col without a number of colours, and a number of colours for another
 // file type, are InputErrors naming the file.
 #pragma once

@@ -17,7 +17,7 @@ void add_solve_command(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* command = app.add_subcommand(
-      "solve", "solve a problem file (.yaml/.yml, .col with --colours, .wcsp/.wcsp.gz)");
+      "solve", "solve a problem file (.yaml/.yml, .col with --colours, .wcsp/.wcsp.gz, .cfn/.cfn.gz)");
   command->add_option("file", args->file, "the problem file")->required();
   command
       ->add_option("--colours", args->load.colours, "number of colours, for a DIMACS graph (.col)")

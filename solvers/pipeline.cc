@@ -28,6 +28,7 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
   result.stop = StopReason::kCompleted;
   result.message.clear();
   result.alternatives.clear();
+  budget.note_best(result.evaluations);
   SolveContext stage_context = context;
   stage_context.want_breakdown = false;
   handed_over_.clear();
@@ -46,6 +47,10 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
     }
     stage_context.seed = context.seed + i;
     const bool last = i + 1 == stages_.size();
+    // An anytime stage before the last would take the whole budget (SolveContext::anytime).
+    stage_context.anytime = context.anytime && last;
+    const double stage_began = budget.elapsed_seconds();
+    const std::uint64_t evaluations_before = result.evaluations;
     stage_context.alternatives_wanted =
         last ? context.alternatives_wanted : stages_[i + 1]->alternatives_wanted();
     if (i > 0) stage_context.alternative_starts = handed_over_;
@@ -61,6 +66,13 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
     if (stage_result_.score.better_than(result.score)) {
       result.best = stage_result_.best;
       result.score = stage_result_.score;
+      if (stage_result_.best_found_seconds >= 0) {
+        budget.record_best(evaluations_before + stage_result_.evaluations_at_best,
+                           stage_began + stage_result_.best_found_seconds);
+      } else {
+        budget.record_best(evaluations_before + stage_result_.evaluations,
+                           stage_began + stage_result_.wall_seconds);
+      }
     }
     result.stop = stage_result_.stop;
     if (!stage_result_.message.empty()) {

@@ -8,7 +8,9 @@
 // (SolveContext::alternatives_wanted), and hands what it got to the next stage as
 // SolveContext::alternative_starts, so "occlusion-octree>ceres-refine" refines from the
 // octree's best and from its best points in other regions. The pipeline's own
-// alternatives are its last stage's.
+// alternatives are its last stage's. Only the last stage runs anytime (SolveContext::anytime):
+// the ones before it run their default course within the limits, so they leave the rest of
+// the budget to the last. The time to best is that of the stage that found the best.
 #pragma once
 
 #include <memory>

@@ -26,7 +26,8 @@ const OptionSchema<SlsSolver::Options>& SlsSolver::Options::schema() {
            "draws per variable when placing a randomly dealt permutation group (0 = off)", 0);
     s.integer("stall_moves", &Options::stall_moves,
               "steps without progress before a restart; 0 = 10 x variables + 1000", 0);
-    s.integer("restarts", &Options::restarts, "restarts before giving up (>= 0)", 0);
+    s.integer("restarts", &Options::restarts,
+              "cap on restarts; 0 = none: run until a limit (10 restarts if no limit is set)", 0);
     s.boolean("stop_at_zero", &Options::stop_at_zero, "stop at a zero-cost feasible assignment");
     s.real("initial_radius", &Options::initial_radius,
            "continuous step scale, fraction of each domain's width (> 0)");
@@ -73,16 +74,31 @@ std::string SlsSolver::Options::validate() const {
 SlsSolver::SlsSolver(std::string name, Options options)
     : name_(std::move(name)), options_(options) {}
 
+std::uint64_t SlsSolver::restart_cap(const SolveContext& context) const {
+  if (options_.restarts > 0) return static_cast<std::uint64_t>(options_.restarts);
+  return context.runs_to_the_limit() ? 0 : static_cast<std::uint64_t>(kDefaultRestarts);
+}
+
 void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                            const SolveContext& context, SolverResult& result) {
   Budget budget(context.limits, 256);
   result.solutions_at_best = 0;
+  const std::uint64_t cap = restart_cap(context);
   std::optional<csp::Score> scored;
   if (problem.all_discrete()) {
-    scored = detail::run_discrete_sls(problem, start, options_, context.seed, budget, result);
+    scored = detail::run_discrete_sls(problem, start, options_, cap, context.seed, budget, result);
   } else {
-    detail::run_continuous_sls(problem, start, options_, context.seed, budget, result, current_,
-                               candidate_);
+    detail::run_continuous_sls(problem, start, options_, cap, context.seed, budget, result,
+                               current_, candidate_);
+  }
+  // Ending on the default restarts is not what the user asked for (anytime): say why.
+  if (result.stop == StopReason::kCompleted && options_.restarts == 0 && cap != 0) {
+    result.message += "; " + std::to_string(kDefaultRestarts) +
+                      (!context.anytime
+                           ? " restarts is the default of a pipeline stage before the last: "
+                             "set restarts=N to change it"
+                           : " restarts is the default when no limit is set: give a time, "
+                             "evaluation or iteration limit, or restarts=N");
   }
   finish_result(problem, context, budget, result, scored);
 }

@@ -8,8 +8,8 @@
 // probability `walk_probability` it takes a random value anyway (random walk out of the
 // local minimum). Tabu: a move that does not improve the score may not give a variable back
 // the value it left less than `tabu_tenure` steps ago. After `stall_moves` steps without
-// improving the run's best the search restarts from a random assignment, at most
-// `restarts` times.
+// improving the run's best the search restarts from a random assignment (see "Anytime"
+// below for how many times).
 //
 // Permutation structure (see detail/permutation_groups.h): variables tied by a hard
 // all_different whose domains are exactly its k values are kept a permutation. The search
@@ -38,11 +38,16 @@
 // candidate moves every variable by a Gaussian step of standard deviation radius x its
 // domain's width (discrete variables move along their value indices); an improving
 // candidate is accepted, and after `patience` failures in a row the radius shrinks by
-// `shrink`; below `min_radius` the search restarts from a uniform random point, at most
-// `restarts` times. The first run starts from the given start.
+// `shrink`; below `min_radius` the search restarts from a uniform random point. The first
+// run starts from the given start.
 //
-// Both stop at a zero-cost feasible assignment (kTargetReached) when `stop_at_zero`, else
-// run until the restarts are used up (kCompleted) or a limit is reached. Deterministic for a
+// Anytime: both stop at a zero-cost feasible assignment (kTargetReached) when
+// `stop_at_zero`, the one optimum they can recognise. Otherwise they restart without end and
+// stop when a limit of the context is reached (its reason), reporting the best found and when
+// (SolverResult::best_found_seconds). `restarts` > 0 caps the restarts (kCompleted once they
+// are used up). With no limit and no cap (or as a stage before the last of a pipeline, see
+// SolveContext::anytime) they make kDefaultRestarts restarts and the message says so: a solve
+// must end, and this is the short run the camera makes every frame. Deterministic for a
 // given seed. Evaluations count candidates scored (a delta, a swap, a point); iterations
 // count steps.
 #pragma once
@@ -74,7 +79,8 @@ class SlsSolver : public Solver {
     std::int64_t stall_moves = 0;      // steps without progress before a restart; 0 = auto
                                        // (10 x variables + 1000)
     // Both.
-    std::int64_t restarts = 10;  // restarts after a stall (discrete) or a collapsed radius
+    std::int64_t restarts = 0;   // cap on the restarts after a stall (discrete) or a
+                                 // collapsed radius; 0 = none (see "Anytime" above)
     bool stop_at_zero = true;    // stop at a zero-cost feasible assignment
     // Continuous search.
     double initial_radius = 0.25;  // step scale as a fraction of each domain's width
@@ -85,6 +91,12 @@ class SlsSolver : public Solver {
     static const OptionSchema<Options>& schema();
     std::string validate() const;
   };
+
+  // The restarts made when there is neither a limit nor a cap.
+  static constexpr std::int64_t kDefaultRestarts = 10;
+  // The restart cap of a solve in `context`: `restarts` when set, else 0 (none) when the
+  // solve runs to a limit, else kDefaultRestarts.
+  std::uint64_t restart_cap(const SolveContext& context) const;
 
   SlsSolver(std::string name, Options options);
   std::string name() const override { return name_; }

@@ -21,7 +21,11 @@ std::string SolverResult::brief_report(const std::string& solver_name) const {
   out << solver_name << ": cost " << score.soft << (feasible() ? " feasible" : " INFEASIBLE");
   if (!feasible()) out << " (hard violation " << score.hard << ")";
   out << ", " << evaluations << " evaluations, " << iterations << " iterations, "
-      << wall_seconds << " s, stop: " << to_string(stop);
+      << wall_seconds << " s";
+  if (best_found_seconds >= 0) {
+    out << ", best at " << best_found_seconds << " s (" << evaluations_at_best << " evaluations)";
+  }
+  out << ", stop: " << to_string(stop);
   if (!message.empty()) out << " (" << message << ")";
   return out.str();
 }
@@ -49,7 +53,7 @@ bool Budget::exhausted(std::uint64_t evaluations, std::uint64_t iterations) {
     return true;
   }
   if (limits_.time_limit_seconds > 0 && ++calls_ % clock_stride_ == 0 &&
-      elapsed_seconds() >= limits_.time_limit_seconds) {
+      read_clock(evaluations) >= limits_.time_limit_seconds) {
     reason_ = StopReason::kTimeLimit;
     return true;
   }
@@ -58,6 +62,25 @@ bool Budget::exhausted(std::uint64_t evaluations, std::uint64_t iterations) {
 
 double Budget::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+double Budget::read_clock(std::uint64_t evaluations) {
+  last_reading_ = elapsed_seconds();
+  last_reading_evaluations_ = evaluations;
+  read_once_ = true;
+  return last_reading_;
+}
+
+void Budget::note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations) {
+  const bool fresh_enough = read_once_ && evaluations >= last_reading_evaluations_ &&
+                            evaluations - last_reading_evaluations_ <= stale_evaluations;
+  record_best(evaluations, fresh_enough && stale_evaluations > 0 ? last_reading_
+                                                                  : read_clock(evaluations));
+}
+
+void Budget::record_best(std::uint64_t evaluations, double seconds) {
+  best_seconds_ = seconds;
+  best_evaluations_ = evaluations;
 }
 
 void finish_result(const csp::Problem& problem, const SolveContext& context,
@@ -69,6 +92,8 @@ void finish_result(const csp::Problem& problem, const SolveContext& context,
     result.breakdown.clear();
   }
   result.wall_seconds = budget.elapsed_seconds();
+  result.best_found_seconds = budget.best_found_seconds();
+  result.evaluations_at_best = budget.best_found_seconds() >= 0 ? budget.evaluations_at_best() : 0;
 }
 
 }  // namespace sightline::solvers

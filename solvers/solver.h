@@ -24,6 +24,8 @@ struct SolveLimits {
   std::uint64_t max_evaluations = 0;  // constraint-set evaluations (one candidate = one)
   std::uint64_t max_iterations = 0;   // solver-specific steps (moves, passes, nodes)
   double time_limit_seconds = 0;      // wall-clock
+
+  bool any() const { return max_evaluations || max_iterations || time_limit_seconds > 0; }
 };
 
 struct SolveContext {
@@ -38,6 +40,17 @@ struct SolveContext {
   // alternatives), best first; a local method may refine from them too. Not owned: valid
   // during the solve only. Each has one value per variable.
   std::span<const csp::Assignment> alternative_starts;
+  // Anytime solvers (the stochastic ones, which cannot recognise an optimum above zero) use
+  // their whole budget: they run until a limit stops them, and a restart count of their own
+  // caps them only when the user sets one. A solver must end, though, so with no limit at
+  // all they run a default course instead (sls: SlsSolver::kDefaultRestarts) and say so in
+  // the result's message. A pipeline clears this flag for the stages before its last: they
+  // run that default course within the pipeline's limits, and the last stage gets what is
+  // left (`sls>bnb` under a time limit is sls's default run, then bnb for the rest).
+  bool anytime = true;
+
+  // True when an anytime solver should run until a limit stops it.
+  bool runs_to_the_limit() const { return anytime && limits.any(); }
 };
 
 enum class StopReason {
@@ -67,12 +80,17 @@ struct SolverResult {
   // the solver does not explore (most leave it empty).
   std::vector<csp::Assignment> alternatives;
   double wall_seconds = 0;
+  // When `best` was found: seconds since the solve began and the evaluations made by then
+  // (time to best, for anytime solvers). -1 and 0 when the solver does not record it.
+  double best_found_seconds = -1;
+  std::uint64_t evaluations_at_best = 0;
   StopReason stop = StopReason::kCompleted;
   std::string message;  // solver-specific detail, may be empty
 
   bool feasible() const { return score.feasible(); }
   double cost() const { return score.soft; }
-  // "sls: cost 0 feasible, 1234 evaluations, 56 iterations, 0.012 s, stop: target reached"
+  // "sls: cost 0 feasible, 1234 evaluations, 56 iterations, 0.012 s, best at 0.004 s
+  // (800 evaluations), stop: target reached"
   std::string brief_report(const std::string& solver_name) const;
 };
 
@@ -103,15 +121,33 @@ class Budget {
   StopReason reason() const { return reason_; }
   double elapsed_seconds() const;
 
+  // The solver's best so far was found now, after `evaluations` evaluations (time to best,
+  // copied into the result by finish_result). Reading the clock at every improvement would
+  // cost a local search that improves 10^5 times a second, so the last reading is reused
+  // when it was taken at most `stale_evaluations` evaluations ago (0: always read it).
+  void note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations = 0);
+  // The same at a known time (a pipeline passing on a stage's own record).
+  void record_best(std::uint64_t evaluations, double seconds);
+  double best_found_seconds() const { return best_seconds_; }          // -1 if never noted
+  std::uint64_t evaluations_at_best() const { return best_evaluations_; }
+
  private:
+  double read_clock(std::uint64_t evaluations);
+
   SolveLimits limits_;
   unsigned clock_stride_;
   unsigned calls_ = 0;
   std::chrono::steady_clock::time_point start_;
   StopReason reason_ = StopReason::kCompleted;
+  double last_reading_ = 0;                    // seconds at the last clock reading
+  std::uint64_t last_reading_evaluations_ = 0;  // evaluations at that reading
+  bool read_once_ = false;
+  double best_seconds_ = -1;
+  std::uint64_t best_evaluations_ = 0;
 };
 
-// Shared ending: stores score/breakdown of `result.best` and the wall time. The score is
+// Shared ending: stores score/breakdown of `result.best`, the wall time and the time to best
+// (from the budget's note_best; -1 when the solver noted none). The score is
 // computed from scratch (Problem::score) unless the solver passes `scored`: the score of
 // result.best it has itself just computed from scratch (sls, which checks a zero-cost
 // assignment that way before it stops), so the same evaluation is not made twice.

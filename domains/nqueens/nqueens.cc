@@ -14,10 +14,8 @@ std::unique_ptr<csp::Problem> build_nqueens(std::size_t n) {
   auto problem = std::make_unique<csp::Problem>(std::to_string(n) + "-queens");
   std::vector<csp::VariableId> columns(n);
   const auto last = static_cast<std::int64_t>(n) - 1;
-  for (std::size_t i = 0; i < n; ++i) {
-    columns[i] =
-        problem->add_variable("q" + std::to_string(i), csp::Domain::integer_range(0, last));
-  }
+  const csp::VariableId first = problem->add_variables("q", n, csp::Domain::integer_range(0, last));
+  for (std::size_t i = 0; i < n; ++i) columns[i] = first + static_cast<csp::VariableId>(i);
   // Offsets sign x i: 0 for rows, +i for diagonals, -i for anti-diagonals.
   auto offsets_times = [n](double sign) {
     std::vector<double> offsets(n);

@@ -33,8 +33,9 @@ inline bool worsens(const csp::Score& delta) { return csp::Score{}.better_than(d
 
 class DiscreteSearch {
  public:
-  DiscreteSearch(const csp::Problem& problem, const SlsSolver::Options& options, std::uint64_t seed,
-                 Budget& budget);
+  // `restart_cap`: restarts allowed, 0 = until a limit stops the search.
+  DiscreteSearch(const csp::Problem& problem, const SlsSolver::Options& options,
+                 std::uint64_t restart_cap, std::uint64_t seed, Budget& budget);
 
   // Fills result.best, evaluations, iterations, stop and message. Returns the score of
   // result.best when the search stopped on a zero-cost assignment, which it has checked
@@ -75,6 +76,9 @@ class DiscreteSearch {
 
   // Stops the search at a zero-cost feasible assignment (checked from scratch).
   bool check_target();
+
+  // The current assignment, scored `score`, becomes the best; the budget notes when.
+  void new_best(const csp::Score& score);
 
   // After an accepted move: keep the best, measure progress, look for the target.
   void after_move();
@@ -170,6 +174,7 @@ class DiscreteSearch {
 
   std::uint64_t evaluations_ = 0, iterations_ = 0;
   std::uint64_t stall_ = 0, stall_limit_ = 0, restarts_used_ = 0;
+  const std::uint64_t restart_cap_;  // 0 = none
   bool stopped_ = false;
   std::optional<csp::Score> target_score_;  // set by check_target when it stops the search
   StopReason stop_ = StopReason::kCompleted;

@@ -32,7 +32,8 @@ double uniform_in(const csp::Domain& d, Random& random) {
 }  // namespace
 
 void run_continuous_sls(const csp::Problem& problem, std::span<const double> start,
-                        const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
+                        const SlsSolver::Options& options, std::uint64_t restart_cap,
+                        std::uint64_t seed, Budget& budget,
                         SolverResult& result, std::vector<double>& current,
                         std::vector<double>& candidate) {
   Random random(seed);
@@ -42,6 +43,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
   csp::Score here = problem.score(current);
   result.best = current;
   csp::Score best = here;
+  budget.note_best(1);
   std::uint64_t evaluations = 1, iterations = 0, restarts_used = 0, failures = 0;
   double radius = options.initial_radius;
   result.stop = StopReason::kCompleted;
@@ -70,6 +72,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
       if (here.better_than(best)) {
         best = here;
         result.best = current;
+        budget.note_best(evaluations);
       }
       continue;
     }
@@ -78,7 +81,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
     radius *= options.shrink;
     if (radius >= options.min_radius) continue;
     // The neighbourhood has collapsed onto a local optimum: restart from a random point.
-    if (restarts_used >= static_cast<std::uint64_t>(options.restarts)) {
+    if (restart_cap != 0 && restarts_used >= restart_cap) {
       result.message = "radius collapsed after " + std::to_string(restarts_used) + " restarts";
       break;
     }
@@ -96,6 +99,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
     if (here.better_than(best)) {
       best = here;
       result.best = current;
+      budget.note_best(evaluations);
     }
   }
   result.evaluations = evaluations;

@@ -3,6 +3,8 @@
 // and mixed ones. Each fills result.best, evaluations, iterations, stop and message; the
 // caller scores the result (finish_result), except that run_discrete_sls returns the score
 // of result.best when it has computed it from scratch already (it stopped at zero cost).
+// `restart_cap` is SlsSolver::restart_cap (0 = restart until a limit stops the search); each
+// notes its best on the budget (time to best).
 #pragma once
 
 #include <cstdint>
@@ -16,12 +18,14 @@ namespace sightline::solvers::detail {
 
 std::optional<csp::Score> run_discrete_sls(const csp::Problem& problem,
                                            std::span<const double> start,
-                                           const SlsSolver::Options& options, std::uint64_t seed,
+                                           const SlsSolver::Options& options,
+                                           std::uint64_t restart_cap, std::uint64_t seed,
                                            Budget& budget, SolverResult& result);
 
 // `current` and `candidate` are scratch buffers kept by the caller between solves.
 void run_continuous_sls(const csp::Problem& problem, std::span<const double> start,
-                        const SlsSolver::Options& options, std::uint64_t seed, Budget& budget,
+                        const SlsSolver::Options& options, std::uint64_t restart_cap,
+                        std::uint64_t seed, Budget& budget,
                         SolverResult& result, std::vector<double>& current,
                         std::vector<double>& candidate);
 

@@ -112,6 +112,53 @@ TEST(Problem, RefusesDuplicateUnknownAndRepeatedVariables) {
   EXPECT_FALSE(p.find_variable("y").has_value());
 }
 
+TEST(Problem, AddsNamedBatchesThatLookUpLikeSingleVariables) {
+  Problem p;
+  p.add_variable("a", Domain::integer_range(0, 1));
+  const VariableId first = p.add_variables("q", 12, Domain::integer_range(0, 11));
+  EXPECT_EQ(first, 1u);
+  ASSERT_EQ(p.num_variables(), 13u);
+  for (std::size_t i = 0; i < 12; ++i) {
+    EXPECT_EQ(p.variable(first + i).name, "q" + std::to_string(i));
+    EXPECT_EQ(p.variable(first + i).domain.size(), 12u);
+    EXPECT_EQ(p.find_variable("q" + std::to_string(i)), first + i);
+  }
+  EXPECT_EQ(p.find_variable("a"), 0u);
+  EXPECT_FALSE(p.find_variable("q12"));
+  EXPECT_FALSE(p.find_variable("q01"));
+  // Another variable added one at a time after a batch is indexed too.
+  const VariableId b = p.add_variable("b", Domain::integer_range(0, 1));
+  EXPECT_EQ(p.find_variable("b"), b);
+  EXPECT_EQ(p.find_variable("q11"), first + 11);
+  // A batch's incidences work as for single variables.
+  p.add_constraint(std::make_unique<NotEqual>(first, first + 1));
+  EXPECT_EQ(p.incidences(first).size(), 1u);
+}
+
+TEST(Problem, RefusesBatchNamesThatAnotherVariableHasAlready) {
+  {
+    Problem p;
+    p.add_variable("q3", Domain::integer_range(0, 1));
+    EXPECT_THROW(p.add_variables("q", 5, Domain::integer_range(0, 1)), std::invalid_argument);
+  }
+  {
+    Problem p;  // q03 and q5 are not among q0..q4: no clash
+    p.add_variable("q03", Domain::integer_range(0, 1));
+    p.add_variable("q5", Domain::integer_range(0, 1));
+    EXPECT_NO_THROW(p.add_variables("q", 5, Domain::integer_range(0, 1)));
+    EXPECT_THROW(p.add_variable("q4", Domain::integer_range(0, 1)), std::invalid_argument);
+  }
+  {
+    Problem p;  // q10..q14 of a first batch are q1 0..4 of a second
+    p.add_variables("q", 20, Domain::integer_range(0, 1));
+    EXPECT_THROW(p.add_variables("q1", 5, Domain::integer_range(0, 1)), std::invalid_argument);
+    EXPECT_THROW(p.add_variables("q", 1, Domain::integer_range(0, 1)), std::invalid_argument);
+    EXPECT_NO_THROW(p.add_variables("r", 3, Domain::integer_range(0, 1)));
+  }
+  Problem p;
+  EXPECT_THROW(p.add_variables("", 3, Domain::integer_range(0, 1)), std::invalid_argument);
+}
+
 TEST(Problem, CheckAssignmentNamesTheOffendingVariable) {
   const auto p = small_problem();
   EXPECT_NO_THROW(p->check_assignment(Assignment{0, 1, 2}));

@@ -1,0 +1,21 @@
+// libFuzzer target for the .wcsp reader (csp/files/wcsp_reader.h): any bytes either read
+// into a Problem or are refused with csp::InputError; anything else (a crash, another
+// exception, a sanitizer report) is a bug. A problem read is also scored once, on its
+// first values, so the tables it built are exercised.
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+#include "csp/files/wcsp_reader.h"
+#include "csp/input_error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  try {
+    const auto problem = sightline::csp::parse_wcsp(in, "fuzz.wcsp");
+    if (problem->num_variables() <= 100000) (void)problem->score(problem->default_assignment());
+  } catch (const sightline::csp::InputError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,129 @@
+// The toulbar2 adapter, when the toulbar2 program is installed (skipped otherwise): on
+// toulbar2's own instances it proves the same optimum as bnb (and the known one), with a
+// solution that scores that cost here; it proves infeasibility; it keeps a time limit on a
+// problem it cannot finish, returning its best; and it declares unsuitable what .wcsp cannot
+// hold. Registration follows the binary's presence.
+#include "solvers/toulbar2/toulbar2_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "csp/files/wcsp_reader.h"
+#include "csp/kinds/table.h"
+#include "solvers/registry.h"
+
+namespace sightline::solvers {
+namespace {
+
+const std::string kDataDir = std::string(SIGHTLINE_SHARED_DIR) + "/data/wcsp/";
+
+std::unique_ptr<Solver> toulbar2() {
+  return std::make_unique<Toulbar2Solver>("toulbar2", Toulbar2Solver::Options{});
+}
+
+#define SKIP_WITHOUT_TOULBAR2() \
+  if (!find_toulbar2()) GTEST_SKIP() << "toulbar2 is not installed"
+
+TEST(Toulbar2Solver, IsRegisteredExactlyWhenItsProgramIsFound) {
+  SolverRegistry registry;
+  EXPECT_EQ(register_toulbar2_solver(registry), find_toulbar2().has_value());
+  EXPECT_EQ(registry.contains("toulbar2"), find_toulbar2().has_value());
+  EXPECT_FALSE(find_toulbar2("/nonexistent/toulbar2"));
+}
+
+class Toulbar2Instance : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Toulbar2Instance, ProvesTheSameOptimumAsBnb) {
+  SKIP_WITHOUT_TOULBAR2();
+  const auto problem = csp::read_wcsp_file(kDataDir + GetParam() + ".wcsp");
+  SolveContext context;
+  context.limits.max_iterations = 2'000'000;  // bnb's nodes; only a guard against a hang
+  const SolverResult exact = SolverRegistry::global().create("bnb")->solve(
+      *problem, problem->default_assignment(), context);
+  ASSERT_EQ(exact.stop, StopReason::kProvenOptimal);
+  const SolverResult r = toulbar2()->solve(*problem, problem->default_assignment(), {});
+  EXPECT_EQ(r.stop, StopReason::kProvenOptimal) << r.brief_report("toulbar2");
+  EXPECT_TRUE(r.feasible()) << r.brief_report("toulbar2");
+  EXPECT_EQ(r.cost(), exact.cost()) << r.brief_report("toulbar2");
+  std::ifstream ub(kDataDir + GetParam() + ".ub");
+  double known = -1;
+  ub >> known;
+  EXPECT_EQ(r.cost(), known);
+  // Its own report agrees with the score here (a disagreement is added to the message).
+  EXPECT_EQ(r.message, "toulbar2 proved optimality") << r.message;
+  EXPECT_EQ(problem->score(r.best).soft, r.cost());
+}
+
+INSTANTIATE_TEST_SUITE_P(Toulbar2ValidationSet, Toulbar2Instance,
+                         ::testing::Values("4queens", "base2", "example", "golomb4", "magic3",
+                                           "oconnell", "sudoku", "warehouse", "zebra"));
+
+TEST(Toulbar2Solver, ProvesAnInfeasibleProblemInfeasible) {
+  SKIP_WITHOUT_TOULBAR2();
+  // x != y and x == y, both hard.
+  csp::Problem p("infeasible");
+  const auto x = p.add_variable("x", csp::Domain::integer_range(0, 1));
+  const auto y = p.add_variable("y", csp::Domain::integer_range(0, 1));
+  p.add_constraint(std::make_unique<csp::Table>(
+      std::vector<csp::VariableId>{x, y},
+      std::vector<csp::Table::Entry>{{{0, 0}, 1}, {{1, 1}, 1}}, 0.0, 1.0, true));
+  p.add_constraint(std::make_unique<csp::Table>(
+      std::vector<csp::VariableId>{x, y},
+      std::vector<csp::Table::Entry>{{{0, 1}, 1}, {{1, 0}, 1}}, 0.0, 1.0, true));
+  const SolverResult r = toulbar2()->solve(p, p.default_assignment(), {});
+  EXPECT_EQ(r.stop, StopReason::kCompleted);
+  EXPECT_EQ(r.message, "toulbar2 proved infeasible");
+  EXPECT_FALSE(r.feasible());
+}
+
+// A random Max-CSP toulbar2 cannot prove in a second: 60 variables of 8 values, 400 dense
+// binary tables of costs 0..9.
+std::unique_ptr<csp::Problem> hard_max_csp() {
+  auto p = std::make_unique<csp::Problem>("random");
+  std::mt19937 rng(1);
+  for (int i = 0; i < 60; ++i) p->add_variable("v" + std::to_string(i), csp::Domain::integer_range(0, 7));
+  std::uniform_int_distribution<int> var(0, 59), cost(0, 9);
+  for (int k = 0; k < 400; ++k) {
+    const int a = var(rng);
+    int b = var(rng);
+    while (b == a) b = var(rng);
+    std::vector<csp::Table::Entry> entries;
+    for (int i = 0; i < 8; ++i) {
+      for (int j = 0; j < 8; ++j) entries.push_back({{double(i), double(j)}, double(cost(rng))});
+    }
+    p->add_constraint(std::make_unique<csp::Table>(
+        std::vector<csp::VariableId>{csp::VariableId(a), csp::VariableId(b)}, entries, 0.0));
+  }
+  return p;
+}
+
+TEST(Toulbar2Solver, StopsAtTheTimeLimitWithItsBestSolution) {
+  SKIP_WITHOUT_TOULBAR2();
+  const auto p = hard_max_csp();
+  SolveContext context;
+  context.limits.time_limit_seconds = 1.0;
+  const SolverResult r = toulbar2()->solve(*p, p->default_assignment(), context);
+  EXPECT_EQ(r.stop, StopReason::kTimeLimit) << r.brief_report("toulbar2");
+  EXPECT_TRUE(r.feasible());
+  EXPECT_GT(r.cost(), 0);
+  EXPECT_EQ(p->score(r.best).soft, r.cost());
+  EXPECT_LT(r.wall_seconds, 3.0);  // interrupted at 1 s, killed a second later at worst
+  EXPECT_EQ(r.message.find("toulbar2 reports cost"), std::string::npos) << r.message;
+}
+
+TEST(Toulbar2Solver, DeclaresUnsuitableWhatDotWcspCannotHold) {
+  csp::Problem continuous;
+  continuous.add_variable("x", csp::Domain::real_interval(0, 1));
+  EXPECT_NE(toulbar2()->unsuitable_reason(continuous).find("discrete"), std::string::npos);
+  csp::Problem fractional;
+  const auto x = fractional.add_variable("x", csp::Domain::integer_range(0, 1));
+  fractional.add_constraint(std::make_unique<csp::Table>(
+      std::vector<csp::VariableId>{x}, std::vector<csp::Table::Entry>{{{1}, 0.5}}, 0.0));
+  EXPECT_NE(toulbar2()->unsuitable_reason(fractional).find("integer"), std::string::npos)
+      << toulbar2()->unsuitable_reason(fractional);
+}
+
+}  // namespace
+}  // namespace sightline::solvers
