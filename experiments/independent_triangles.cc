@@ -140,15 +140,22 @@ bool IndependentTriangles::segment_blocked(const Eigen::Vector3d& a,
 }
 
 double IndependentTriangles::distance(const Eigen::Vector3d& p, double limit) const {
+  // Every triangle nearer than r touches the cube of half-size r around p, so searching the
+  // cells of growing cubes (doubling r) and stopping once the best found is within r is
+  // exact; the last round covers the whole grid.
+  const double whole = (Eigen::Vector3d(cells_[0], cells_[1], cells_[2]) * cell_).norm() +
+                       (p - origin_).cwiseAbs().maxCoeff();
   double best = limit;
-  const double reach = std::isfinite(limit) ? limit : 1e300;
-  const Eigen::Vector3d r = Eigen::Vector3d::Constant(std::min(reach, 1e6));
-  visit_box(p - r, p + r, [&](std::uint32_t i) {
-    const Triangle& t = triangles_[i];
-    best = std::min(best, point_triangle_distance(p, t.a, t.b, t.c));
-    return false;
-  });
-  return best;
+  for (double r = cell_;; r *= 2) {
+    const double reach = std::min({r, limit, whole});
+    const Eigen::Vector3d half = Eigen::Vector3d::Constant(reach);
+    visit_box(p - half, p + half, [&](std::uint32_t i) {
+      const Triangle& t = triangles_[i];
+      best = std::min(best, point_triangle_distance(p, t.a, t.b, t.c));
+      return false;
+    });
+    if (best <= reach || reach >= limit || reach >= whole) return best;
+  }
 }
 
 }  // namespace sightline::experiments

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace sightline::experiments {
@@ -34,11 +35,19 @@ TEST(IndependentTriangles, TheGridAgreesWithALoopOverEveryTriangle) {
     const Eigen::Vector3d a(where(rng), where(rng) * 0.3, where(rng));
     const Eigen::Vector3d b = a + Eigen::Vector3d(where(rng), where(rng), where(rng)) * 0.2;
     bool expected = false;
-    double nearest = 1.5;
+    double nearest = 1.5, unlimited = INFINITY;
+    // Far points too: the unlimited search grows its cube until it holds the answer.
+    const Eigen::Vector3d far = a * 3;
+    double far_nearest = INFINITY;
     for (std::uint32_t i = 0; i < mesh.size(); ++i) {
       expected = expected || segment_meets_triangle(a, b, mesh.vertex(i, 0), mesh.vertex(i, 1), mesh.vertex(i, 2));
-      nearest = std::min(nearest, point_triangle_distance(a, mesh.vertex(i, 0), mesh.vertex(i, 1), mesh.vertex(i, 2)));
+      const double d = point_triangle_distance(a, mesh.vertex(i, 0), mesh.vertex(i, 1), mesh.vertex(i, 2));
+      nearest = std::min(nearest, d);
+      unlimited = std::min(unlimited, d);
+      far_nearest = std::min(far_nearest, point_triangle_distance(far, mesh.vertex(i, 0), mesh.vertex(i, 1), mesh.vertex(i, 2)));
     }
+    ASSERT_DOUBLE_EQ(grid.distance(a, INFINITY), unlimited) << "query " << q;
+    ASSERT_DOUBLE_EQ(grid.distance(far, INFINITY), far_nearest) << "query " << q;
     blocked += expected;
     ASSERT_EQ(grid.segment_blocked(a, b), expected) << "query " << q;
     ASSERT_DOUBLE_EQ(grid.distance(a, 1.5), nearest) << "query " << q;
