@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <random>
+#include <string>
 
 #include "csp/files/wcsp_reader.h"
 #include "solvers/detail/conditioned_problem.h"
@@ -219,13 +220,22 @@ TEST_P(WeightedLocalSearch, UsesTheWholeBudgetWhenNoRestartCapIsSet) {
   EXPECT_NE(r.message.find("best found at"), std::string::npos) << r.message;
 }
 
-TEST_P(WeightedLocalSearch, StopsAtATimeLimitOnAProblemItCannotFinish) {
+// celar7sub0 within 0.2 s: tabu cannot know it is optimal and runs to the limit; lns may
+// prove it (bnb with soft arc consistency solves its neighbourhoods fast) and stop sooner.
+// Either way the limit holds (5%, plus the clock's stride).
+TEST_P(WeightedLocalSearch, StopsAtATimeLimitUnlessItProvesTheOptimumFirst) {
   const auto p = instance("celar7sub0.wcsp.gz");
   SolveContext context;
   context.limits.time_limit_seconds = 0.2;
   const SolverResult r =
       SolverRegistry::global().create(GetParam())->solve(*p, p->default_assignment(), context);
-  EXPECT_EQ(r.stop, StopReason::kTimeLimit) << r.brief_report(GetParam());
+  if (std::string(GetParam()) == "tabu") {
+    EXPECT_EQ(r.stop, StopReason::kTimeLimit) << r.brief_report(GetParam());
+  } else {
+    EXPECT_TRUE(r.stop == StopReason::kTimeLimit || r.stop == StopReason::kProvenOptimal)
+        << r.brief_report(GetParam());
+  }
+  EXPECT_LT(r.wall_seconds, 0.2 * 1.05 + 0.02) << r.brief_report(GetParam());
 }
 
 TEST_P(WeightedLocalSearch, IsDeterministicForASeedOnARealInstance) {
