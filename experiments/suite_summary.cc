@@ -81,11 +81,12 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
   if (!solver_order.empty()) {
     out << "### Camera solvers over all scenes\n\n"
            "Visibility is judged by the independent brute-force check. Means over runs, "
-           "except: occlusion episodes, clearance frames and cuts are totals; longest occlusion "
-           "and p99 solve time are the worst run's.\n\n";
+           "except: occlusion episodes, clearance frames, frames in solid matter (a level's "
+           "brushes) and cuts are totals; longest occlusion and p99 solve time are the worst "
+           "run's.\n\n";
     Table t{{"solver", "runs", "frames", "look-at visible %", "body visible (mean)",
              "body visible (min)", "occlusion episodes", "longest occlusion (frames)",
-             "clearance frames", "cuts", "speed p99 m/s", "jerk p99 m/s^3", "cost mean",
+             "clearance frames", "in solid frames", "cuts", "speed p99 m/s", "jerk p99 m/s^3", "cost mean",
              "solve p50 us", "solve p99 us (worst)"},
             {}};
     for (const std::string& key : solver_order) {
@@ -110,7 +111,8 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
                         fixed(worst("visible_fraction_min", false), 3),
                         fixed(total("occlusion_episodes"), 0),
                         fixed(worst("longest_occlusion_frames", true), 0),
-                        fixed(total("clearance_violations"), 0), fixed(total("cuts"), 0),
+                        fixed(total("clearance_violations"), 0),
+                        fixed(total("solid_frames"), 0), fixed(total("cuts"), 0),
                         fixed(mean("speed_p99"), 2), fixed(mean("jerk_p99"), 0),
                         fixed(mean("cost_mean"), 3), fixed(mean("solve_us_p50"), 0),
                         fixed(worst("solve_us_p99", true), 0)});
