@@ -1,5 +1,7 @@
 #include "experiments/report.h"
 
+#include "experiments/camera_run.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -217,8 +219,9 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
   }
   for (const SuiteScene& scene : suite.scenes) {
     std::vector<LoadedRun> runs;
-    std::vector<SolidBox> boxes;
-    for (const auto& s : scene.scene->solids()) boxes.push_back({s.box.min, s.box.max});
+    // The independent check, boxes and a level's triangles alike (the clearance radius and
+    // smooth step do not matter for these two questions).
+    const MetricsInput world = metrics_input(*scene.scene, scene.scene->profile(), 0);
     for (const RunResult& r : outcome.results) {
       if (r.kind != "camera" || r.subject != scene.label) continue;
       LoadedRun loaded;
@@ -233,9 +236,8 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
         loaded.trace.clear();
       }
       for (const TraceRow& row : loaded.trace) {
-        loaded.drawing.occluded.push_back(segment_blocked(boxes, row.camera, row.target) ? 1 : 0);
-        loaded.visible_fraction.push_back(
-            visible_body_fraction(boxes, row.camera, row.character, scene.scene->character().size));
+        loaded.drawing.occluded.push_back(segment_blocked(world, row.camera, row.target) ? 1 : 0);
+        loaded.visible_fraction.push_back(visible_body_fraction(world, row.camera, row.character));
       }
       runs.push_back(std::move(loaded));
     }
