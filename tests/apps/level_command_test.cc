@@ -2,6 +2,8 @@
 // level written here, the same seed writing the same bytes, and every kind of bad input a
 // message and exit status 2 (never a crash).
 #include <gtest/gtest.h>
+
+#include "run_sightline.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,27 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;  // -1 when the program did not exit normally (a crash)
-  std::string output;
-};
+using sightline::test::Outcome;
+using sightline::test::run;
+using sightline::test::contains;
 
-Outcome run(const std::string& arguments) {
-  const std::string command = std::string("'") + SIGHTLINE_BINARY + "' " + arguments + " 2>&1";
-  Outcome r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
-    r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
-  return r;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 std::string read(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -2,6 +2,8 @@
 // and judged on its exit status and what it prints. Bad input must give a non-zero status and
 // a message naming the file and line or listing the valid names, never a crash.
 #include <gtest/gtest.h>
+
+#include "run_sightline.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,31 +17,14 @@
 
 namespace {
 
-struct Outcome {
-  int status = -1;     // exit status; -1 when the program did not exit normally (a crash)
-  std::string output;  // stdout and stderr together
-};
-
-Outcome run(const std::string& arguments) {
-  const std::string command = std::string("'") + SIGHTLINE_BINARY + "' " + arguments + " 2>&1";
-  Outcome r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
-    r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
-  return r;
-}
+using sightline::test::Outcome;
+using sightline::test::run;
+using sightline::test::contains;
 
 std::string example(const std::string& name) {
   return std::string(SIGHTLINE_SOURCE_DIR) + "/examples/graphs/" + name;
 }
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // The numbers on the last non-empty line of `output` (where --print-solution - writes).
 std::vector<int> last_line_numbers(const std::string& output) {
