@@ -263,17 +263,6 @@ double ray_box(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const camera:
   return t0;
 }
 
-// The outward normal of the face of `b` nearest to p (p on its surface).
-Eigen::Vector3d face_normal(const camera::Aabb& b, const Eigen::Vector3d& p) {
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  double best = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(p[k] - b.min[k]) < best) { best = std::abs(p[k] - b.min[k]); n = Eigen::Vector3d::Zero(); n[k] = -1; }
-    if (std::abs(p[k] - b.max[k]) < best) { best = std::abs(p[k] - b.max[k]); n = Eigen::Vector3d::Zero(); n[k] = 1; }
-  }
-  return n;
-}
-
 void write_to_vector(void* context, void* data, int size) {
   auto* bytes = static_cast<std::vector<unsigned char>*>(context);
   const auto* p = static_cast<const unsigned char*>(data);
@@ -352,7 +341,7 @@ std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const Tra
       if (const double tc = ray_box(eye, d, body); tc < best) {
         best = tc;
         what = 3;
-        normal = face_normal(body, eye + tc * d);
+        normal = body.nearest_face_normal(eye + tc * d);
         base = Eigen::Vector3d(1.0, 0.45, 0.1);
       }
       if (what == 1) {

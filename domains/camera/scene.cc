@@ -51,24 +51,8 @@ std::optional<SurfaceHit> Scene::first_hit(const Eigen::Vector3d& a,
     hit.t = box->t;
     hit.source = SurfaceHit::Source::kBox;
     hit.index = box->box;
-    // The face entered: the axis whose slab the segment entered last, i.e. the one the hit
-    // point lies on; its normal faces the start.
-    if (hit.t > 0) {
-      const Aabb& bb = solid_tree_.box(box->box);
-      const Eigen::Vector3d p = a + hit.t * (b - a);
-      double closest = INFINITY;
-      for (int i = 0; i < 3; ++i) {
-        for (int side = 0; side < 2; ++side) {
-          const double plane = side == 0 ? bb.min[i] : bb.max[i];
-          const double gap = std::abs(p[i] - plane);
-          if (gap < closest) {
-            closest = gap;
-            hit.normal.setZero();
-            hit.normal[i] = side == 0 ? -1 : 1;
-          }
-        }
-      }
-    }
+    // The face entered, whose outward normal faces the start.
+    if (hit.t > 0) hit.normal = solid_tree_.box(box->box).nearest_face_normal(a + hit.t * (b - a));
     best = hit;
   }
   if (const auto tri = triangles_->first_hit(a, b); tri && (!best || tri->t < best->t)) {

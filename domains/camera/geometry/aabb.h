@@ -58,6 +58,26 @@ struct Aabb {
            o.min.y() < max.y() && min.z() < o.max.z() && o.min.z() < max.z();
   }
 
+  // The outward unit normal of the face nearest to `p` (for a point on the surface: the face
+  // it lies on; ties go to the lower axis, min face first).
+  Eigen::Vector3d nearest_face_normal(const Eigen::Vector3d& p) const {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    double best = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(p[i] - min[i]) < best) {
+        best = std::abs(p[i] - min[i]);
+        n.setZero();
+        n[i] = -1;
+      }
+      if (std::abs(p[i] - max[i]) < best) {
+        best = std::abs(p[i] - max[i]);
+        n.setZero();
+        n[i] = 1;
+      }
+    }
+    return n;
+  }
+
   // Signed Euclidean distance from `p` to the box: the distance to the box when outside
   // (> 0), minus the distance to the nearest face when inside (<= 0, 0 on the boundary).
   //
