@@ -185,6 +185,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     if (r.score.better_than(evaluator.score())) {
       for (csp::VariableId v = 0; v < n; ++v) evaluator.assign(v, r.best[v]);
       best_seconds = budget.elapsed_seconds();
+      budget.record_best(evaluations, best_seconds);
     }
   }
 
@@ -235,6 +236,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
       best = evaluator.values();
       best_score = evaluator.score();
       best_seconds = budget.elapsed_seconds();
+      budget.record_best(evaluations, best_seconds);
       ++improvements;
     }
     if (evaluator.score().better_than(before)) {

@@ -200,6 +200,7 @@ class TabuSearch {
       best_ = table_.values();
       best_step_ = iterations_;
       best_seconds_ = budget_.elapsed_seconds();
+      budget_.record_best(evaluations_, best_seconds_);
     }
   }
 
@@ -222,6 +223,7 @@ class TabuSearch {
       best_ = table_.values();
       best_step_ = iterations_;
       best_seconds_ = budget_.elapsed_seconds();
+      budget_.record_best(evaluations_, best_seconds_);
     }
   }
 

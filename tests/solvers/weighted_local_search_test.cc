@@ -238,6 +238,19 @@ TEST_P(WeightedLocalSearch, StopsAtATimeLimitUnlessItProvesTheOptimumFirst) {
   EXPECT_LT(r.wall_seconds, 0.2 * 1.05 + 0.02) << r.brief_report(GetParam());
 }
 
+// Time to best is in the result, as sls reports it: found within the run, no later than its
+// end, after no more evaluations than the run made.
+TEST_P(WeightedLocalSearch, ReportsWhenItFoundItsBest) {
+  const auto p = instance("example.wcsp");
+  SolveContext context;
+  context.limits.time_limit_seconds = 0.1;
+  const SolverResult r =
+      SolverRegistry::global().create(GetParam())->solve(*p, p->default_assignment(), context);
+  EXPECT_GE(r.best_found_seconds, 0) << r.brief_report(GetParam());
+  EXPECT_LE(r.best_found_seconds, r.wall_seconds);
+  EXPECT_LE(r.evaluations_at_best, r.evaluations);
+}
+
 TEST_P(WeightedLocalSearch, IsDeterministicForASeedOnARealInstance) {
   const auto p = instance("example.wcsp");
   const SolverResult a = run(GetParam(), *p, steps(5000), 9);
