@@ -1,4 +1,5 @@
 #include "solvers/detail/bnb_search.h"
+#include "solvers/detail/bnb_outcome.h"
 
 #include <algorithm>
 #include <cmath>
@@ -438,21 +439,7 @@ void BranchAndBoundSearch::run(const csp::Problem& problem, std::span<const doub
   result.evaluations = full_evaluations_;
   result.solutions_at_best = count_mode ? optimal_count_ : 0;
   std::ostringstream message;
-  if (stopped_) {
-    result.stop = budget.reason();
-    message << (have_incumbent_ ? "best found, not proved optimal"
-                                : "no feasible assignment found before the limit");
-  } else if (have_incumbent_) {
-    result.stop = StopReason::kProvenOptimal;
-    message << "proved optimal";
-  } else {
-    result.stop = StopReason::kCompleted;
-    message << "proved infeasible: no assignment satisfies every hard constraint";
-  }
-  if (count_mode && have_incumbent_) {
-    message << "; " << optimal_count_ << " optimal assignment" << (optimal_count_ == 1 ? "" : "s")
-            << (stopped_ ? " found so far" : "");
-  }
+  describe_bnb_outcome(stopped_, have_incumbent_, count_mode, optimal_count_, budget, result, message);
   message << "; " << nodes_ << " nodes, " << evaluations_ << " constraint checks";
   result.message = message.str();
 }

@@ -1,4 +1,5 @@
 #include "solvers/detail/bnb_soft_search.h"
+#include "solvers/detail/bnb_outcome.h"
 
 #include <cmath>
 #include <sstream>
@@ -159,21 +160,7 @@ void SoftArcSearch::run(const csp::Problem& problem, const WcspView& view,
   result.evaluations = full_evaluations_;
   result.solutions_at_best = settings.count_mode ? optimal_count_ : 0;
   std::ostringstream message;
-  if (stopped_) {
-    result.stop = budget.reason();
-    message << (have_incumbent_ ? "best found, not proved optimal"
-                                : "no feasible assignment found before the limit");
-  } else if (have_incumbent_) {
-    result.stop = StopReason::kProvenOptimal;
-    message << "proved optimal";
-  } else {
-    result.stop = StopReason::kCompleted;
-    message << "proved infeasible: no assignment satisfies every hard constraint";
-  }
-  if (settings.count_mode && have_incumbent_) {
-    message << "; " << optimal_count_ << " optimal assignment" << (optimal_count_ == 1 ? "" : "s")
-            << (stopped_ ? " found so far" : "");
-  }
+  describe_bnb_outcome(stopped_, have_incumbent_, settings.count_mode, optimal_count_, budget, result, message);
   message << "; " << nodes_ << " nodes, soft arc consistency " << level_name(settings.level)
           << " (root lower bound " << (root_ok ? std::to_string(root_bound) : "top") << ")";
   result.message = message.str();

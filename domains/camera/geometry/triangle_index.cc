@@ -295,18 +295,12 @@ TriangleIndex::TriangleIndex(const TriangleMesh& mesh) {
 // negative and makes no promise about hits exactly at tnear or tfar, so the closed
 // segment is extended by the tolerance at both ends. A segment shorter than the tolerance
 // is a point: it touches a triangle when the point lies within the tolerance of one.
-bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-  if (!impl_ || !all_finite(a) || !all_finite(b)) return false;
-  const Eigen::Vector3d d = b - a;
-  const double length = d.norm();
-  const double tol = tolerance(impl_->scale, a, b);
-  if (length <= tol) return nearest(a, tol).has_value();
-  const double e = tol / length;
-  const Eigen::Vector3d origin = a - e * d;
+namespace {
 
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray;
+// The Embree ray for the segment extended by e (in units of d) at both ends: from origin
+// (= a - e d) along d over [0, 1 + 2e].
+void extended_segment_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& d, double e,
+                          RTCRay& ray) {
   ray.org_x = static_cast<float>(origin.x());
   ray.org_y = static_cast<float>(origin.y());
   ray.org_z = static_cast<float>(origin.z());
@@ -319,6 +313,23 @@ bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vecto
   ray.mask = ~0u;
   ray.id = 0;
   ray.flags = 0;
+}
+
+}  // namespace
+
+bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  if (!impl_ || !all_finite(a) || !all_finite(b)) return false;
+  const Eigen::Vector3d d = b - a;
+  const double length = d.norm();
+  const double tol = tolerance(impl_->scale, a, b);
+  if (length <= tol) return nearest(a, tol).has_value();
+  const double e = tol / length;
+  const Eigen::Vector3d origin = a - e * d;
+
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  extended_segment_ray(origin, d, e, ray);
   rtcOccluded1(impl_->scene, &context, &ray);
   return ray.tfar < 0;  // set to -inf on a hit
 }
@@ -342,18 +353,7 @@ std::optional<TriangleIndex::Hit> TriangleIndex::first_hit(const Eigen::Vector3d
   rtcInitIntersectContext(&context);
   RTCRayHit rayhit;
   RTCRay& ray = rayhit.ray;
-  ray.org_x = static_cast<float>(origin.x());
-  ray.org_y = static_cast<float>(origin.y());
-  ray.org_z = static_cast<float>(origin.z());
-  ray.tnear = 0;
-  ray.dir_x = static_cast<float>(d.x());
-  ray.dir_y = static_cast<float>(d.y());
-  ray.dir_z = static_cast<float>(d.z());
-  ray.time = 0;
-  ray.tfar = static_cast<float>(1 + 2 * e);
-  ray.mask = ~0u;
-  ray.id = 0;
-  ray.flags = 0;
+  extended_segment_ray(origin, d, e, ray);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
