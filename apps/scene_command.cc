@@ -70,7 +70,11 @@ void check_scene(const std::string& path) {
   std::cout << "  frames:     " << scene.frame_count() << " at " << scene.frame_rate()
             << " frames per second\n";
   std::cout << "  camera:     start " << vec(scene.start_camera_position())
-            << (scene.camera_start() ? "" : " (the profile's ideal spot)") << "\n";
+            << (scene.camera_start()  ? ""
+              : scene.level() ? " (the profile's ideal spot, pulled in toward the character "
+                                "where a wall is in the way)"
+                              : " (the profile's ideal spot)")
+            << "\n";
   std::cout << "  profile:    " << profile.name << " (" << scene.profile_source() << "): height "
             << profile.height.desired << " m, distance " << profile.distance.desired
             << " m, orientation " << profile.orientation.desired << " deg";
