@@ -235,6 +235,18 @@ TEST(Statistics, BootstrapMeanIntervalMatchesNormalTheoryOnALargeSample) {
   EXPECT_NEAR(median_ci.high - median_ci.low, 1.2533 * theory, 0.3 * 1.2533 * theory);
 }
 
+// 1..100 in order (a resampler that favours some positions would show): mean 50.5, sd
+// sqrt((100^2 - 1) / 12) = 28.87 (population) -> normal-theory width 2 * 1.96 * 2.887 = 11.3.
+TEST(Statistics, BootstrapDrawsFromTheWholeSample) {
+  Values sample;
+  for (int i = 1; i <= 100; ++i) sample.push_back(i);
+  const ConfidenceInterval ci = bootstrap_mean_ci(sample);
+  EXPECT_LT(ci.low, 50.5);
+  EXPECT_GT(ci.high, 50.5);
+  EXPECT_NEAR(0.5 * (ci.low + ci.high), 50.5, 1.5);
+  EXPECT_NEAR(ci.high - ci.low, 11.3, 0.2 * 11.3);
+}
+
 TEST(Statistics, BootstrapIsReproducibleForTheSameSeedAndDependsOnIt) {
   // Values with no common denominator, so resample means rarely coincide between seeds.
   const Values sample = {3.01, 9.3, 1.0, 4.007, 7.21, 2.0003, 8.9};
