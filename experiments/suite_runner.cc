@@ -18,6 +18,7 @@
 
 #include "experiments/camera_run.h"
 #include "experiments/suite_problem.h"
+#include "experiments/suite_statistics.h"
 #include "solvers/registry.h"
 
 namespace sightline::experiments {
@@ -344,6 +345,7 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
     outcome.results.push_back(r);
   }
   write_atomically((out / "results.csv").string(), csv.str());
+  write_atomically((out / "stats.csv").string(), statistics_csv(suite, outcome));
   outcome.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_atomically((out / "summary.md").string(), markdown_summary(suite, outcome));

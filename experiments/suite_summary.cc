@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "experiments/suite_runner.h"
+#include "experiments/suite_statistics.h"
 
 namespace sightline::experiments {
 namespace {
@@ -171,6 +172,7 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
                             : "-"});
   }
   if (any_toy) out << "### Problems\n\n" << toy.str() << '\n';
+  out << statistics_markdown(suite, outcome);  // repetitions over seeds, PAR-2
   return out.str();
 }
 

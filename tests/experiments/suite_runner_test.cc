@@ -150,6 +150,33 @@ problems:
   EXPECT_EQ(result_columns(suite)[2], "problem");
 }
 
+// A toy suite repeated over seeds with two solvers: stats.csv beside results.csv holds each
+// (problem, solver)'s repetitions and each solver's PAR-2, and the summary shows both.
+TEST(SuiteRunner, WritesStatisticsOfRepetitionsOverSeeds) {
+  ScratchDir dir("runner-stats");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: repeated
+problems:
+  instances: [{nqueens: [6]}]
+  solvers: [sls, bnb]
+  seeds: [1, 2, 3]
+)"));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  ASSERT_EQ(outcome.results.size(), 6u);
+  const std::string label = outcome.results.front().subject;
+  const std::string csv = read_text(dir.path("out") + "/stats.csv");
+  EXPECT_EQ(csv.rfind("kind,subject,solver,profile,metric,statistic,value\n", 0), 0u) << csv;
+  for (const std::string solver : {"sls", "bnb"}) {
+    EXPECT_NE(csv.find("toy," + label + "," + solver + ",-,cost,n,3\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("toy,*," + solver + ",-,time_s,par2_s,"), std::string::npos) << csv;
+  }
+  // bnb proves 6-queens feasible every time: cost 0 with a zero-width interval.
+  EXPECT_NE(csv.find("toy," + label + ",bnb,-,cost,median,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("toy," + label + ",bnb,-,cost,mean_ci_high,0\n"), std::string::npos) << csv;
+  const std::string summary = read_text(dir.path("out") + "/summary.md");
+  EXPECT_NE(summary.find("### Repetitions over seeds"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("### PAR-2"), std::string::npos) << summary;
+}
+
 TEST(SuiteReport, IsSelfContainedWithPicturesOfEveryScene) {
   ScratchDir dir("runner-report");
   const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
