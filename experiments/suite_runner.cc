@@ -4,6 +4,7 @@
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/thread_pool.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -189,6 +190,24 @@ class Progress {
 };
 
 }  // namespace
+
+std::string metric_text(const std::vector<std::string>& columns, const RunResult& r,
+                        const std::string& name) {
+  const auto c = static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
+                                          columns.begin());
+  return c < r.values.size() ? r.values[c] : std::string();
+}
+
+double metric_value(const std::vector<std::string>& columns, const RunResult& r,
+                    const std::string& name) {
+  const std::string text = metric_text(columns, r, name);
+  if (text.empty()) return std::nan("");
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    return std::nan("");
+  }
+}
 
 std::vector<std::string> metric_columns(const Suite& suite) {
   std::vector<std::string> columns;

@@ -54,6 +54,13 @@ struct SuiteOutcome {
 // Metric columns for this suite: the camera metrics if it has camera runs, then the toy
 // metrics if it has toy runs.
 std::vector<std::string> metric_columns(const Suite& suite);
+// A result's metric `name` among `columns` (metric_columns of its suite): its text ("" when
+// the run has none or the name is not a column), and its number (NaN then, or when the
+// text is not a number).
+std::string metric_text(const std::vector<std::string>& columns, const RunResult& r,
+                        const std::string& name);
+double metric_value(const std::vector<std::string>& columns, const RunResult& r,
+                    const std::string& name);
 // All results.csv columns: id, kind, scene (or problem), solver, profile, seed, status,
 // the metric columns, note.
 std::vector<std::string> result_columns(const Suite& suite);

@@ -13,15 +13,6 @@
 namespace sightline::experiments {
 namespace {
 
-double parse(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  try {
-    return std::stod(text);
-  } catch (const std::exception&) {
-    return std::nan("");
-  }
-}
-
 std::string number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", v);
@@ -61,11 +52,11 @@ struct Statistics {
 Statistics compute(const Suite& suite, const SuiteOutcome& outcome) {
   const std::vector<std::string> columns = metric_columns(suite);
   auto text = [&](const RunResult& r, const std::string& name) {
-    const std::size_t c =
-        static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
-    return c < r.values.size() ? r.values[c] : std::string();
+    return metric_text(columns, r, name);
   };
-  auto value = [&](const RunResult& r, const std::string& name) { return parse(text(r, name)); };
+  auto value = [&](const RunResult& r, const std::string& name) {
+    return metric_value(columns, r, name);
+  };
   Statistics s;
 
   // Repetitions over seeds: groups in the order they first appear.

@@ -14,15 +14,6 @@
 namespace sightline::experiments {
 namespace {
 
-double parse(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  try {
-    return std::stod(text);
-  } catch (const std::exception&) {
-    return std::nan("");
-  }
-}
-
 std::string fixed(double v, int decimals) {
   if (std::isnan(v)) return "-";
   char buffer[32];
@@ -53,13 +44,8 @@ struct Table {
 
 std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
   const std::vector<std::string> columns = metric_columns(suite);
-  auto column = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
-                                     columns.begin());
-  };
   auto value = [&](const RunResult& r, const std::string& name) {
-    const std::size_t c = column(name);
-    return c < r.values.size() ? parse(r.values[c]) : std::nan("");
+    return metric_value(columns, r, name);
   };
 
   std::ostringstream out;
@@ -160,13 +146,13 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
                           "", "", "", "", "", ""});
       continue;
     }
-    const std::size_t broken = column("independent_broken");
+    const std::string broken = metric_text(columns, r, "independent_broken");
     toy.rows.push_back({r.subject, r.solver, std::to_string(r.seed), "ok",
                         fixed(value(r, "cost"), 3), fixed(value(r, "hard_violations"), 0),
                         value(r, "feasible") == 1 ? "yes" : "no", fixed(value(r, "time_s"), 3),
                         fixed(value(r, "evaluations"), 0),
-                        broken < r.values.size() && !r.values[broken].empty()
-                            ? r.values[broken] + " " + (r.note.find("attacking") != std::string::npos
+                        !broken.empty()
+                            ? broken + " " + (r.note.find("attacking") != std::string::npos
                                                             ? "attacking pairs"
                                                             : "conflicts")
                             : "-"});
