@@ -14,24 +14,7 @@
 #include "domains/camera/constraints/occlusion.h"
 #include "domains/camera/scene_file.h"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// GCC cannot see that the replaced operator new below is malloc-based and warns that its
-// free() does not match; the pairing is ours and correct.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "tests/count_allocations.h"
 
 namespace sightline::camera {
 namespace {
