@@ -280,27 +280,34 @@ bool read_run_file(const std::string& path, RunResult& r) {
   return true;
 }
 
-SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const fs::path out(options.out_dir);
-  const fs::path runs_dir = out / "runs";
+std::string run_file_base(const std::string& out_dir, const std::string& id) {
+  return (fs::path(out_dir) / "runs" / id).string();
+}
+
+RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir) {
+  const std::string base = run_file_base(out_dir, run.id);
+  RunResult r = execute_run(suite, run, base + ".trace.csv");
+  write_atomically(base + ".result", run_file_text(suite, r));
+  return r;
+}
+
+SuiteState read_suite_state(const Suite& suite, const std::string& out_dir) {
+  const fs::path runs_dir = fs::path(out_dir) / "runs";
   std::error_code ec;
   fs::create_directories(runs_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + runs_dir.string() + ": " + ec.message());
-
-  const std::vector<SuiteRun> runs = expand_runs(suite);
+  SuiteState state;
+  state.runs = expand_runs(suite);
   const std::vector<std::string> columns = metric_columns(suite);
-  SuiteOutcome outcome;
-  outcome.total = runs.size();
-  std::vector<RunResult> results(runs.size());
-  std::vector<char> finished(runs.size(), 0);
-  std::vector<std::size_t> pending;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
+  state.results.resize(state.runs.size());
+  state.finished.assign(state.runs.size(), 0);
+  for (std::size_t i = 0; i < state.runs.size(); ++i) {
+    const SuiteRun& run = state.runs[i];
     RunResult stored;
-    if (read_run_file((runs_dir / (runs[i].id + ".result")).string(), stored) &&
-        stored.definition == runs[i].definition) {
+    if (read_run_file(run_file_base(out_dir, run.id) + ".result", stored) &&
+        stored.definition == run.definition) {
       // Metric values were stored by name: put them back in this suite's column order.
-      RunResult r = skeleton(suite, runs[i]);
+      RunResult r = skeleton(suite, run);
       r.status = stored.status;
       r.note = stored.note;
       for (const std::string& kv : stored.values) {
@@ -309,52 +316,30 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
           if (columns[c] == kv.substr(0, eq)) r.values[c] = kv.substr(eq + 1);
         }
       }
-      results[i] = std::move(r);
-      finished[i] = 1;
-      ++outcome.reused;
+      state.results[i] = std::move(r);
+      state.finished[i] = 1;
+      ++state.reused;
     } else {
-      pending.push_back(i);
+      state.pending.push_back(i);
     }
   }
-  if (options.max_new_runs > 0 && pending.size() > options.max_new_runs) {
-    pending.resize(options.max_new_runs);
-  }
+  return state;
+}
 
-  unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-  Progress progress(options.progress && ::isatty(STDERR_FILENO), runs.size(), outcome.reused);
-  std::mutex error_mutex;
-  std::string write_error;
-  {
-    boost::asio::thread_pool pool(jobs);
-    for (std::size_t i : pending) {
-      boost::asio::post(pool, [&, i] {
-        const std::string base = (runs_dir / runs[i].id).string();
-        RunResult r = execute_run(suite, runs[i], base + ".trace.csv");
-        try {
-          write_atomically(base + ".result", run_file_text(suite, r));
-        } catch (const std::exception& e) {
-          std::lock_guard<std::mutex> lock(error_mutex);
-          write_error = e.what();
-        }
-        results[i] = std::move(r);
-        finished[i] = 1;
-        progress.finished_one();
-      });
-    }
-    pool.join();
-  }
-  progress.end();
-  if (!write_error.empty()) throw std::runtime_error(write_error);
-  outcome.ran = pending.size();
-
+SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
+                                 const SuiteState& state) {
+  const fs::path out(out_dir);
+  SuiteOutcome outcome;
+  outcome.total = state.runs.size();
+  outcome.reused = state.reused;
   // results.csv: finished runs in the suite's order.
   std::ostringstream csv;
   const std::vector<std::string> header = result_columns(suite);
   for (std::size_t c = 0; c < header.size(); ++c) csv << (c ? "," : "") << header[c];
   csv << '\n';
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (!finished[i]) continue;
-    const RunResult& r = results[i];
+  for (std::size_t i = 0; i < state.runs.size(); ++i) {
+    if (!state.finished[i]) continue;
+    const RunResult& r = state.results[i];
     if (r.status == "failed") ++outcome.failed;
     csv << csv_field(r.id) << ',' << r.kind << ',' << csv_field(r.subject) << ','
         << csv_field(r.solver) << ',' << csv_field(r.profile) << ',' << r.seed << ','
@@ -365,9 +350,47 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
   }
   write_atomically((out / "results.csv").string(), csv.str());
   write_atomically((out / "stats.csv").string(), statistics_csv(suite, outcome));
+  return outcome;
+}
+
+SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  SuiteState state = read_suite_state(suite, options.out_dir);
+  std::vector<std::size_t> pending = state.pending;
+  if (options.max_new_runs > 0 && pending.size() > options.max_new_runs) {
+    pending.resize(options.max_new_runs);
+  }
+
+  unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  Progress progress(options.progress && ::isatty(STDERR_FILENO), state.runs.size(),
+                    state.reused);
+  std::mutex error_mutex;
+  std::string write_error;
+  {
+    boost::asio::thread_pool pool(jobs);
+    for (std::size_t i : pending) {
+      boost::asio::post(pool, [&, i] {
+        try {
+          state.results[i] = run_and_record(suite, state.runs[i], options.out_dir);
+          state.finished[i] = 1;
+        } catch (const std::exception& e) {
+          std::lock_guard<std::mutex> lock(error_mutex);
+          write_error = e.what();
+        }
+        progress.finished_one();
+      });
+    }
+    pool.join();
+  }
+  progress.end();
+  if (!write_error.empty()) throw std::runtime_error(write_error);
+
+  SuiteOutcome outcome = write_suite_outputs(suite, options.out_dir, state);
+  outcome.ran = pending.size();
   outcome.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_atomically((out / "summary.md").string(), markdown_summary(suite, outcome));
+  write_atomically((fs::path(options.out_dir) / "summary.md").string(),
+                   markdown_summary(suite, outcome));
   return outcome;
 }
 

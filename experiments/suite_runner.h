@@ -70,6 +70,29 @@ bool is_timing_column(const std::string& column);
 // Runs one combination now (no files). Exceptions become status "failed".
 RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path);
 
+// --- The run-file protocol, shared by every engine (the thread pool here, MPI) ---
+// OUT/runs/<id>: the path of a run's files without extension (".result", ".trace.csv").
+std::string run_file_base(const std::string& out_dir, const std::string& id);
+// Runs one combination and records it: its trace, then its result file, each written to a
+// ".tmp" name and renamed. Throws std::runtime_error when the files cannot be written.
+RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir);
+
+// What an output folder holds for a suite: every run of expand_runs(suite), which of them
+// are finished (a result file naming the same definition) and their results.
+struct SuiteState {
+  std::vector<SuiteRun> runs;
+  std::vector<RunResult> results;  // meaningful where finished[i]
+  std::vector<char> finished;
+  std::vector<std::size_t> pending;  // indices of the unfinished runs, in suite order
+  std::size_t reused = 0;            // finished before this call
+};
+// Reads OUT/runs (created if missing; std::runtime_error if it cannot be).
+SuiteState read_suite_state(const Suite& suite, const std::string& out_dir);
+// Writes OUT/results.csv and OUT/stats.csv from the finished runs and returns the outcome
+// (total, reused, failed, results; the caller sets ran and seconds and writes summary.md).
+SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
+                                 const SuiteState& state);
+
 // Runs the suite into options.out_dir (created if needed). Throws std::runtime_error if the
 // directory cannot be written.
 SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options);

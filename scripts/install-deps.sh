@@ -13,6 +13,10 @@ packages=(
   openarena-088-data openarena-085-data
   # WCSP: toulbar2's JSON .cfn files, and toulbar2 itself as a reference solver.
   nlohmann-json3-dev toulbar2
+  # Clusters: Open MPI for `mpirun ... sightline run` (optional at build time).
+  openmpi-bin libopenmpi-dev
+  # The report's 3D replay (three.js, inlined) and its check in a real headless browser.
+  libjs-three chromium
 )
 missing=()
 for p in "${packages[@]}"; do
