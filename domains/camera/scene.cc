@@ -34,6 +34,7 @@ Aabb Scene::world_bounds() const {
   Aabb bounds = solid_tree_.bounds();
   if (!area_tree_.empty()) bounds.merge(area_tree_.bounds());
   if (!triangles_->empty()) bounds.merge(triangles_->bounds());
+  for (const Mover& m : movers_) bounds.merge(m.swept_box());
   return bounds;
 }
 

@@ -33,6 +33,7 @@
 #include "domains/camera/geometry/box_tree.h"
 #include "domains/camera/geometry/triangle_index.h"
 #include "domains/camera/level/level.h"
+#include "domains/camera/mover.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/trajectory.h"
 
@@ -96,8 +97,13 @@ class Scene {
   const std::vector<Area>& areas() const { return areas_; }
   const CharacterShape& character() const { return character_; }
   const Trajectory& trajectory() const { return trajectory_; }
-  // Bounds of the solid boxes, the level and the areas (Aabb::empty() when there are none).
+  // Bounds of the solid boxes, the level, the areas and the movers' swept boxes (Aabb::empty() when there are none).
   Aabb world_bounds() const;
+
+  // Boxes that move on their own keyframes. Scene's queries below answer for the static
+  // geometry only; SceneAtTime (scene_at_time.h) answers for everything at a given time.
+  const std::vector<Mover>& movers() const { return movers_; }
+  void set_movers(std::vector<Mover> movers) { movers_ = std::move(movers); }
 
   // The level, when the scene has one (null otherwise). Setting it builds its index.
   const Level* level() const { return level_.get(); }
@@ -155,6 +161,7 @@ class Scene {
   std::string description_;
   std::vector<SolidBox> solids_;
   std::vector<Area> areas_;
+  std::vector<Mover> movers_;
   CharacterShape character_;
   Trajectory trajectory_;
   double frame_rate_;
