@@ -66,10 +66,10 @@ struct CharacterShape {
 
 // What a sight line or probe hits first: a solid box or a level triangle.
 struct SurfaceHit {
-  enum class Source { kBox, kTriangle };
+  enum class Source { kBox, kTriangle, kMover };
   double t = 0;          // segment parameter of the hit, in [0, 1] (0 when starting inside)
   Source source = Source::kBox;
-  std::uint32_t index = 0;  // the box (into solids()) or the triangle (into level mesh)
+  std::uint32_t index = 0;  // the box (into solids()), the triangle (into level mesh) or the mover
   // Unit normal of the surface hit, facing the segment's start (for shading and sliding);
   // zero when the segment starts inside a box.
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();

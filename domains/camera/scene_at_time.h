@@ -1,0 +1,64 @@
+// SceneAtTime: the scene's geometry at one moment: the static boxes and level, plus every
+// mover placed where its keyframes put it at that time.
+//
+// Scene is shared, read-only, by every run of a suite (one per thread), so it cannot hold a
+// "current time". Each run (each camera, each baseline, each horizon sample of the
+// anticipating camera) owns a SceneAtTime, calls set_time() once per frame and asks its
+// queries, which have Scene's meaning and answer for boxes, triangles and movers together.
+// This is the one geometry interface of the camera: nothing that judges where the camera
+// may go asks Scene's static-only queries.
+//
+// Movers are few (people, doors, vehicles) next to the static geometry, so they sit in a
+// flat array beside the static index, tested after one reject against their common bounds,
+// rather than in a BVH refit every frame: measured in docs/BENCHMARKS.md ("Movers").
+// set_time() and the queries do not allocate; the constructor sizes everything once.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "domains/camera/geometry/aabb.h"
+#include "domains/camera/scene.h"
+
+namespace sightline::camera {
+
+class SceneAtTime {
+ public:
+  // At the scene's first frame. `scene` must outlive this object.
+  explicit SceneAtTime(const Scene& scene);
+
+  const Scene& scene() const { return *scene_; }
+  // Places every mover at time t (seconds). O(movers) for times that advance frame by frame.
+  void set_time(double t);
+  double time() const { return time_; }
+  // The movers' boxes at time(), in the order of scene().movers().
+  const std::vector<Aabb>& mover_boxes() const { return boxes_; }
+  bool has_movers() const { return !boxes_.empty(); }
+
+  // --- Scene's queries, with the movers at time() (see scene.h for their meaning) ---
+  bool line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    return scene_->line_of_sight(a, b) && !mover_blocks(a, b);
+  }
+  // A mover hit has source kMover and the mover's index.
+  std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  double clearance(const Eigen::Vector3d& p,
+                   double limit = std::numeric_limits<double>::infinity()) const;
+  std::optional<NearestSurface> nearest_surface(
+      const Eigen::Vector3d& p, double limit = std::numeric_limits<double>::infinity()) const;
+  bool open_at(const Eigen::Vector3d& p) const;
+
+  // True when the segment touches a mover's box at time().
+  bool mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+
+ private:
+  const Scene* scene_;
+  double time_ = 0;
+  std::vector<Aabb> boxes_;
+  std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
+  Aabb bounds_ = Aabb::empty();        // of boxes_
+};
+
+}  // namespace sightline::camera
