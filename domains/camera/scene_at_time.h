@@ -8,10 +8,12 @@
 // This is the one geometry interface of the camera: nothing that judges where the camera
 // may go asks Scene's static-only queries.
 //
-// Movers are few (people, doors, vehicles) next to the static geometry, so they sit in a
-// flat array beside the static index, tested after one reject against their common bounds,
-// rather than in a BVH refit every frame: measured in docs/BENCHMARKS.md ("Movers").
-// set_time() and the queries do not allocate; the constructor sizes everything once.
+// Movers sit beside the static index, in a structure of their own (docs/BENCHMARKS.md,
+// "Movers", measured both): up to kFlatMovers of them in a flat array tested one by one after
+// one reject against their common bounds (a handful of slab tests beat any tree walk);
+// beyond that in a BoxTree built once at the first frame's positions and refitted (node
+// bounds recomputed, shape kept) by every set_time(). set_time() and the queries do not
+// allocate; the constructor sizes everything once.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +29,8 @@ namespace sightline::camera {
 
 class SceneAtTime {
  public:
+  static constexpr std::size_t kFlatMovers = 16;
+
   // At the scene's first frame. `scene` must outlive this object.
   explicit SceneAtTime(const Scene& scene);
 
@@ -59,6 +63,8 @@ class SceneAtTime {
   std::vector<Aabb> boxes_;
   std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
   Aabb bounds_ = Aabb::empty();        // of boxes_
+  BoxTree tree_;                       // over boxes_, when there are more than kFlatMovers
+  bool use_tree_ = false;
 };
 
 }  // namespace sightline::camera

@@ -90,6 +90,39 @@ BoxTree::BoxTree(std::vector<Aabb> boxes) : boxes_(std::move(boxes)) {
   for (std::size_t i = 0; i < boxes_.size(); ++i) leaf_boxes_[i] = boxes_[leaf_index_[i]];
 }
 
+void BoxTree::refit(const std::vector<Aabb>& boxes) {
+  if (boxes.size() != boxes_.size()) throw std::invalid_argument("BoxTree::refit: box count changed");
+  if (boxes_.empty()) return;
+  boxes_ = boxes;  // same size: copies in place
+  bounds_ = Aabb::empty();
+  for (std::size_t i = 0; i < boxes_.size(); ++i) {
+    leaf_boxes_[i] = boxes_[leaf_index_[i]];
+    bounds_.merge(boxes_[i]);
+  }
+  // Children are created after their parent (build() appends them), so their ids are larger:
+  // a pass from the largest id down sees every child before its parent. Id 1, the root's
+  // sibling slot, is unused.
+  auto set = [](Node& n, const Aabb& b) {
+    for (int i = 0; i < 3; ++i) {
+      n.lo[i] = padded_down(b.min[i]);
+      n.hi[i] = padded_up(b.max[i]);
+    }
+  };
+  for (auto id = static_cast<std::uint32_t>(2 * pairs_.size() - 1);; --id) {
+    if (id == 1) continue;
+    Node& n = node(id);
+    Aabb b = Aabb::empty();
+    if (n.count > 0) {
+      for (std::uint32_t i = n.first; i < n.first + n.count; ++i) b.merge(leaf_boxes_[i]);
+    } else {
+      b = node(n.first).bounds();
+      b.merge(node(n.first + 1).bounds());
+    }
+    set(n, b);
+    if (id == 0) break;
+  }
+}
+
 void BoxTree::build(std::uint32_t id, std::uint32_t begin, std::uint32_t end, int depth,
                     std::vector<Eigen::Vector3d>& centres) {
   depth_ = std::max(depth_, depth);

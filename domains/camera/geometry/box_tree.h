@@ -42,6 +42,12 @@ class BoxTree {
   BoxTree() = default;
   explicit BoxTree(std::vector<Aabb> boxes);
 
+  // Moves the boxes without rebuilding: `boxes` holds the new box of every box, in the
+  // constructor's order (same count). The tree keeps its shape and only recomputes node
+  // bounds, bottom up, in O(n) with no allocation; queries stay exact, but the tree gets
+  // slower as boxes wander far from where it was built. For movers (scene_at_time.h).
+  void refit(const std::vector<Aabb>& boxes);
+
   std::size_t size() const { return boxes_.size(); }
   bool empty() const { return boxes_.empty(); }
   const Aabb& box(BoxIndex i) const { return boxes_[i]; }

@@ -74,7 +74,7 @@ struct World {
   }
 };
 
-Scene random_scene(std::mt19937& rng, World& world) {
+Scene random_scene(std::mt19937& rng, World& world, int mover_count) {
   std::uniform_real_distribution<double> coord(-10, 10), extent(0.3, 3), when(0, 10);
   std::vector<SolidBox> solids;
   for (int i = 0; i < 12; ++i) {
@@ -84,7 +84,7 @@ Scene random_scene(std::mt19937& rng, World& world) {
     world.statics.push_back({lo, hi});
   }
   std::vector<Mover> movers;
-  for (int m = 0; m < 6; ++m) {
+  for (int m = 0; m < mover_count; ++m) {
     const Eigen::Vector3d size(extent(rng), extent(rng), extent(rng));
     std::vector<MoverKeyframe> path;
     std::vector<double> times;
@@ -108,13 +108,18 @@ Scene random_scene(std::mt19937& rng, World& world) {
   return scene;
 }
 
-TEST(SceneAtTime, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMovers) {
-  std::mt19937 rng(7);
+// Both structures: a few movers (the flat array) and many (the refitted tree).
+class SceneAtTimeAgrees : public ::testing::TestWithParam<int> {};
+
+TEST_P(SceneAtTimeAgrees, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMovers) {
+  const int mover_count = GetParam();
+  ASSERT_EQ(mover_count > static_cast<int>(SceneAtTime::kFlatMovers), mover_count > 20);
+  std::mt19937 rng(7 + mover_count);
   std::uniform_real_distribution<double> coord(-12, 12), when(-1, 11);
   int blocked = 0, mover_first = 0, inside = 0;
   for (int trial = 0; trial < 20; ++trial) {
     World world;
-    const Scene scene = random_scene(rng, world);
+    const Scene scene = random_scene(rng, world, mover_count);
     SceneAtTime now(scene);
     double t = when(rng);
     for (int step = 0; step < 40; ++step) {
@@ -167,6 +172,8 @@ TEST(SceneAtTime, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMovers) {
   EXPECT_GT(mover_first, 50);
   EXPECT_GT(inside, 20);
 }
+
+INSTANTIATE_TEST_SUITE_P(FlatAndTree, SceneAtTimeAgrees, ::testing::Values(6, 40));
 
 TEST(SceneAtTime, AMoverStandsAtItsEndsBeforeTheFirstAndAfterTheLastKeyframe) {
   Scene scene("one", {}, {}, {}, Trajectory({{0, {0, 0, 0}, 0}, {10, {0, 0, 1}, 0}}));
