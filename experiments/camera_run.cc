@@ -3,12 +3,38 @@
 #include <sstream>
 
 namespace sightline::experiments {
+namespace {
+
+// The trace's word for a cut reason (trace.h): short, no commas.
+const char* cut_reason_word(camera::CutReason reason) {
+  switch (reason) {
+    case camera::CutReason::kNone: return "none";
+    case camera::CutReason::kLeftEnclosedArea: return "left-enclosed-area";
+    case camera::CutReason::kBackedUpToObstacle: return "backed-up-to-obstacle";
+    case camera::CutReason::kVisibilityLost: return "visibility-lost";
+    case camera::CutReason::kStuck: return "stuck";
+    case camera::CutReason::kTooFast: return "too-fast";
+  }
+  return "unknown";
+}
+
+}  // namespace
 
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
                            double max_step) {
   MetricsInput input;
   input.boxes.reserve(scene.solids().size());
   for (const auto& solid : scene.solids()) input.boxes.push_back({solid.box.min, solid.box.max});
+  // Movers as plain keyframes: the metrics interpolate them with their own code.
+  input.movers.reserve(scene.movers().size());
+  for (const camera::Mover& m : scene.movers()) {
+    MovingBox& copy = input.movers.emplace_back();
+    copy.size = m.size();
+    for (const camera::MoverKeyframe& k : m.path()) {
+      copy.times.push_back(k.t);
+      copy.positions.push_back(k.position);
+    }
+  }
   if (const camera::Level* level = scene.level()) {
     input.triangles = std::make_shared<const IndependentTriangles>(level->mesh);
     if (level->solid) {
@@ -47,6 +73,7 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
     row.camera = f.position;
     row.target = f.target;
     row.cut = f.cut;
+    row.cut_reason = cut_reason_word(f.cut_reason);
     row.cost = f.score.soft;
     row.solve_us = f.solve_seconds * 1e6;
     row.controller_visible = f.look_at_visible;
