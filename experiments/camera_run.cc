@@ -1,5 +1,6 @@
 #include "experiments/camera_run.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace sightline::experiments {
@@ -95,10 +96,22 @@ std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) 
   out.precision(1);
   out << "Scene '" << scene.name() << "' with solver '" << run.solver << "' and profile '"
       << run.profile << "': " << m.frames << " frames; the look-at point was visible in "
-      << visible << " of them (" << m.visible_percent << "%, independent check), the mean "
+      << visible << " of them (" << m.visible_percent << "%, independent check";
+  if (m.occlusion_episodes > 0) {
+    out << "; lost " << m.occlusion_episodes << " time" << (m.occlusion_episodes == 1 ? "" : "s")
+        << ", back in sight after " << std::setprecision(2) << m.recovery_seconds_mean
+        << " s on average, " << m.recovery_seconds_max << " s at worst" << std::setprecision(1);
+  }
+  if (!scene.movers().empty()) {
+    out << ", movers included";
+  }
+  out << "), the mean "
       << "visible fraction of the body " << m.visible_fraction_mean * 100 << "%; " << m.cuts
-      << " cut" << (m.cuts == 1 ? "" : "s") << " and " << m.unflagged_jumps
-      << " unflagged jumps; " << m.clearance_violations
+      << " cut" << (m.cuts == 1 ? "" : "s") << " (" << m.cuts_per_minute << " per minute"
+      << (m.cut_reasons_known && m.cuts > 0
+              ? ", " + std::to_string(m.discretionary_cuts) + " discretionary"
+              : std::string())
+      << ") and " << m.unflagged_jumps << " unflagged jumps (pops); " << m.clearance_violations
       << " frames inside the clearance radius" << (m.solid_frames > 0 ? ", " + std::to_string(m.solid_frames) + " inside solid matter" : std::string()) << "; cost mean " << m.cost_mean << ", max "
       << m.cost_max << "; solve time median " << m.solve_us_p50 << " us, p99 "
       << m.solve_us_p99 << " us; mean deviation from the profile: height "
