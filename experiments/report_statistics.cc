@@ -103,8 +103,8 @@ std::string chart_svg(const std::string& title, const Axis& x, const std::string
         << "<text x='" << num(X(v)) << "' y='" << num(top + ph + 15)
         << "' text-anchor='middle' fill='#555'>" << tick_text(v) << "</text>";
   }
-  out << "<rect x='" << num(left) << "' y='" << num(top) << "' width='" << num(pw)
-      << "' height='" << num(ph) << "' fill='none' stroke='#999'/>"
+  out << "<rect x='" << num(left) << "' y='" << num(top) << "' width='" << num(pw) << "' height='"
+      << num(ph) << "' fill='none' stroke='#999'/>"
       << "<text x='" << num(left + pw / 2) << "' y='" << num(height - 8)
       << "' text-anchor='middle' fill='#333'>" << html_escape(x_label) << "</text>"
       << "<text x='12' y='" << num(top + ph / 2) << "' text-anchor='middle' fill='#333' "
@@ -161,8 +161,8 @@ std::string cactus_svg(const TimeProfiles& p, const StatisticsFigureOptions& opt
     series.push_back(std::move(line));
   }
   return chart_svg("Cactus plot: runs solved within a time (solved/runs in the legend)", x,
-                   std::string("time, s") + (x.log ? " (log scale)" : ""), y, true,
-                   "runs solved", series, options);
+                   std::string("time, s") + (x.log ? " (log scale)" : ""), y, true, "runs solved",
+                   series, options);
 }
 
 std::string performance_profile_svg(const TimeProfiles& p, const StatisticsFigureOptions& options) {

@@ -22,7 +22,7 @@
 namespace sightline::experiments {
 
 struct StatisticsFigureOptions {
-  int width = 640;   // pixels, each figure
+  int width = 640;  // pixels, each figure
   int height = 300;
 };
 

@@ -140,10 +140,10 @@ struct PairOutcome {
 };
 
 PairOutcome compare_pair(const RankingTable& t, const std::string& a, const std::string& b) {
-  const std::size_t ia = static_cast<std::size_t>(
-      std::find(t.solvers.begin(), t.solvers.end(), a) - t.solvers.begin());
-  const std::size_t ib = static_cast<std::size_t>(
-      std::find(t.solvers.begin(), t.solvers.end(), b) - t.solvers.begin());
+  const std::size_t ia = static_cast<std::size_t>(std::find(t.solvers.begin(), t.solvers.end(), a) -
+                                                  t.solvers.begin());
+  const std::size_t ib = static_cast<std::size_t>(std::find(t.solvers.begin(), t.solvers.end(), b) -
+                                                  t.solvers.begin());
   PairOutcome out;
   // Losses of B and of A: a positive difference B - A means A did better, so the test's W+
   // sums the ranks of the subjects where A is better. Equal losses (both worst included)
@@ -190,15 +190,15 @@ void add_comparison(Suite& suite, const std::string& a, const std::string& b,
                     const csp::SourceLocation& where) {
   const std::vector<std::string> camera = camera_labels(suite), problems = problem_labels(suite);
   auto solvers_text = [&] {
-    return "the suite's camera solvers: " + joined(camera) + "; its problem solvers: " +
-           joined(problems);
+    return "the suite's camera solvers: " + joined(camera) +
+           "; its problem solvers: " + joined(problems);
   };
   for (const std::string& name : {a, b})
     if (!contains(camera, name) && !contains(problems, name))
       throw csp::InputError(where, "compare: '" + name + "' is not a solver of suite '" +
                                        suite.name + "'; " + solvers_text());
-  if (a == b) throw csp::InputError(where, "compare: expected two different solvers, got '" + a +
-                                               "' twice");
+  if (a == b)
+    throw csp::InputError(where, "compare: expected two different solvers, got '" + a + "' twice");
   const bool same_family = (contains(camera, a) && contains(camera, b)) ||
                            (contains(problems, a) && contains(problems, b));
   if (!same_family)
@@ -211,10 +211,10 @@ void add_comparison(Suite& suite, const std::string& a, const std::string& b,
 void add_comparison_option(Suite& suite, const std::string& text) {
   const std::size_t comma = text.find(',');
   const csp::SourceLocation where{"--compare", 0, 0};
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos ||
-      comma == 0 || comma + 1 == text.size())
-    throw csp::InputError(where, "expected two solver labels separated by a comma (A,B), got '" +
-                                     text + "'");
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos || comma == 0 ||
+      comma + 1 == text.size())
+    throw csp::InputError(
+        where, "expected two solver labels separated by a comma (A,B), got '" + text + "'");
   add_comparison(suite, text.substr(0, comma), text.substr(comma + 1), where);
 }
 
@@ -234,8 +234,7 @@ void read_statistics_settings(const csp::Spec& section, Suite& suite) {
     for (const csp::Spec& item : items) pairs.push_back(&item);
   }
   for (const csp::Spec* pair : pairs) {
-    const std::vector<std::string> names =
-        pair->as_strings("a pair of solver labels [A, B]");
+    const std::vector<std::string> names = pair->as_strings("a pair of solver labels [A, B]");
     if (names.size() != 2)
       pair->fail("expected a pair of solver labels [A, B], got " + std::to_string(names.size()) +
                  " names");
@@ -313,16 +312,18 @@ std::string ranking_markdown(const Suite& suite, const SuiteOutcome& outcome) {
           << "Paired by " << subjects_word
           << " on the medians over seeds (as in the ranking); subjects where the two are equal "
              "are dropped (n counts the others); two-sided p, exact for n <= 25, else the "
-             "normal approximation. W(" << c->a << " better) sums the ranks of |difference| "
-             "over the subjects where `" << c->a << "` did better, W(" << c->b
-          << " better) the others.\n\n"
+             "normal approximation. W("
+          << c->a
+          << " better) sums the ranks of |difference| "
+             "over the subjects where `"
+          << c->a << "` did better, W(" << c->b << " better) the others.\n\n"
           << "| metric | subjects | n | `" << c->a << "` better | `" << c->b << "` better | W("
           << c->a << " better) | W(" << c->b << " better) | p | direction |\n"
           << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
       for (const RankingTable* t : family) {
         const PairOutcome p = compare_pair(*t, c->a, c->b);
-        out << "| " << t->metric << " | " << p.subjects << " | " << p.test.n << " | "
-            << p.a_better << " | " << p.b_better << " | " << number(p.test.w_plus) << " | "
+        out << "| " << t->metric << " | " << p.subjects << " | " << p.test.n << " | " << p.a_better
+            << " | " << p.b_better << " | " << number(p.test.w_plus) << " | "
             << number(p.test.w_minus) << " | " << number(p.test.p_value)
             << (p.test.n > 0 ? (p.test.exact ? " (exact)" : " (normal)") : "") << " | "
             << direction(p, c->a, c->b) << " |\n";

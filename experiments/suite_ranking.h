@@ -70,7 +70,8 @@ std::string ranking_markdown(const Suite& suite, const SuiteOutcome& outcome);
 // Rows for stats.csv (no header), kind,subject,solver,profile,metric,statistic,value:
 //   <kind>,*,<solver>,-,<metric>,average_rank,<r>
 //   <kind>,*,*,-,<metric>,friedman_chi_square|friedman_p|friedman_subjects,<v>
-//   <kind>,*,<a> vs <b>,-,<metric>,wilcoxon_n|wilcoxon_w_a_better|wilcoxon_w_b_better|wilcoxon_p,<v>
+//   <kind>,*,<a> vs <b>,-,<metric>,<statistic>,<v>   with statistic wilcoxon_n,
+//                          wilcoxon_w_a_better, wilcoxon_w_b_better, wilcoxon_p
 std::string ranking_csv_rows(const Suite& suite, const SuiteOutcome& outcome);
 
 }  // namespace sightline::experiments

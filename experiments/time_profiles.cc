@@ -84,7 +84,8 @@ TimeProfiles problem_time_profiles(const Suite& suite, const SuiteOutcome& outco
     const bool in_time = timed.solved && timed.seconds <= p.time_limit;
     seconds[index_of(p.instances, r->subject)][s].push_back(in_time ? timed.seconds : infinite);
   }
-  for (const auto& solver_runs : p.runs) p.cactus.push_back(cactus_curve(solver_runs, p.time_limit));
+  for (const auto& solver_runs : p.runs)
+    p.cactus.push_back(cactus_curve(solver_runs, p.time_limit));
 
   // The median run per (instance, solver) decides; then statistics.h's ratios.
   std::vector<std::vector<TimedRun>> table;
@@ -120,7 +121,8 @@ std::string profiles_csv(const TimeProfiles& profiles) {
   out << "solver,tau,fraction\n";
   if (profiles.ratios.empty()) return out.str();
   std::vector<std::vector<double>> fractions;  // [tau][solver]
-  for (double tau : profiles.taus) fractions.push_back(performance_profile_at(profiles.ratios, tau));
+  for (double tau : profiles.taus)
+    fractions.push_back(performance_profile_at(profiles.ratios, tau));
   for (std::size_t s = 0; s < profiles.solvers.size(); ++s)
     for (std::size_t t = 0; t < profiles.taus.size(); ++t)
       out << csv_field(profiles.solvers[s]) << ',' << number(profiles.taus[t]) << ','

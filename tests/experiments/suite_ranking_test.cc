@@ -92,9 +92,11 @@ RunResult problem_run(const Suite& suite, const std::string& problem, const std:
 SuiteOutcome problem_outcome(const Suite& suite) {
   SuiteOutcome o;
   const std::vector<std::tuple<const char*, const char*, std::vector<double>, bool>> cells = {
-      {"p1", "A", {1, 100, 0.5}, true}, {"p1", "B", {1, 1, 1}, true}, {"p1", "C", {2, 2, 2}, true},
-      {"p2", "A", {3, 3, 3}, true},     {"p2", "B", {2, 2, 2}, true}, {"p2", "C", {2, 2, 2}, true},
-      {"p3", "A", {0, 0, 0}, true},     {"p3", "B", {5, 5, 5}, true}, {"p3", "C", {0, 0, 0}, false}};
+      {"p1", "A", {1, 100, 0.5}, true}, {"p1", "B", {1, 1, 1}, true},
+      {"p1", "C", {2, 2, 2}, true},     {"p2", "A", {3, 3, 3}, true},
+      {"p2", "B", {2, 2, 2}, true},     {"p2", "C", {2, 2, 2}, true},
+      {"p3", "A", {0, 0, 0}, true},     {"p3", "B", {5, 5, 5}, true},
+      {"p3", "C", {0, 0, 0}, false}};
   for (const auto& [problem, solver, costs, feasible] : cells)
     for (std::size_t s = 0; s < costs.size(); ++s)
       o.results.push_back(problem_run(suite, problem, solver, s + 1, costs[s], feasible));
@@ -133,7 +135,8 @@ TEST(SuiteRanking, SummaryShowsTheFriedmanStatisticAndPOfAKnownTable) {
 TEST(SuiteRanking, OneSubjectOrOneSolverHasNoRanking) {
   Suite suite = problem_suite({1});
   SuiteOutcome o;
-  for (const char* solver : {"A", "B", "C"}) o.results.push_back(problem_run(suite, "p1", solver, 1, 1, true));
+  for (const char* solver : {"A", "B", "C"})
+    o.results.push_back(problem_run(suite, "p1", solver, 1, 1, true));
   EXPECT_EQ(statistics_markdown(suite, o).find("### Ranking"), std::string::npos);
   EXPECT_EQ(statistics_csv(suite, o).find("average_rank"), std::string::npos);
 }
@@ -300,8 +303,8 @@ problems:
 
 TEST(SuiteRanking, ACompareNamingAnUnknownSolverIsRefusedWithItsLine) {
   ScratchDir dir("ranking-bad");
-  const std::string path =
-      dir.write("suite.yaml", std::string(kTwoSolverSuite) + "statistics:\n  compare: [sls, tabuu]\n");
+  const std::string path = dir.write(
+      "suite.yaml", std::string(kTwoSolverSuite) + "statistics:\n  compare: [sls, tabuu]\n");
   try {
     read_suite_file(path);
     FAIL() << "expected an InputError";
@@ -315,11 +318,11 @@ TEST(SuiteRanking, ACompareNamingAnUnknownSolverIsRefusedWithItsLine) {
 TEST(SuiteRanking, MalformedComparisonsAreRefusedWithTheirLine) {
   ScratchDir dir("ranking-malformed");
   const std::vector<std::pair<std::string, int>> cases = {
-      {"statistics:\n  compare: [sls, bnb, sls]\n", 6},                // three names
-      {"statistics:\n  compare: [sls, sls]\n", 6},                     // the same solver twice
+      {"statistics:\n  compare: [sls, bnb, sls]\n", 6},                 // three names
+      {"statistics:\n  compare: [sls, sls]\n", 6},                      // the same solver twice
       {"statistics:\n  compare:\n    - [sls, bnb]\n    - [bnb]\n", 8},  // a short pair, own line
-      {"statistics:\n  comparison: [sls, bnb]\n", 6},                  // unknown key
-      {"statistics:\n  compare: sls\n", 6}};                           // not a list
+      {"statistics:\n  comparison: [sls, bnb]\n", 6},                   // unknown key
+      {"statistics:\n  compare: sls\n", 6}};                            // not a list
   for (const auto& [tail, line] : cases) {
     const std::string path = dir.write("suite.yaml", std::string(kTwoSolverSuite) + tail);
     try {
@@ -331,7 +334,8 @@ TEST(SuiteRanking, MalformedComparisonsAreRefusedWithTheirLine) {
   }
   // Several pairs are fine.
   const Suite ok = read_suite_file(dir.write(
-      "suite.yaml", std::string(kTwoSolverSuite) + "statistics:\n  compare: [[sls, bnb], [bnb, sls]]\n"));
+      "suite.yaml",
+      std::string(kTwoSolverSuite) + "statistics:\n  compare: [[sls, bnb], [bnb, sls]]\n"));
   EXPECT_EQ(ok.comparisons.size(), 2u);
 }
 

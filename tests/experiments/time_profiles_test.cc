@@ -60,18 +60,13 @@ RunResult run(const Suite& suite, const std::string& problem, const std::string&
 // taus {1, 3}: A 1 at both; B 0 at 1, 1/2 at 3.
 SuiteOutcome outcome_of(const Suite& suite) {
   SuiteOutcome o;
-  o.results = {run(suite, "p", "A", 1, "1", "completed"),
-               run(suite, "p", "A", 2, "1", "completed"),
-               run(suite, "p", "A", 3, "1", "completed"),
-               run(suite, "p", "B", 1, "2", "completed"),
-               run(suite, "p", "B", 2, "3", "target reached"),
-               run(suite, "p", "B", 3, "10", "time limit"),
-               run(suite, "q", "A", 1, "4", "proven optimal"),
-               run(suite, "q", "A", 2, "4", "completed"),
-               run(suite, "q", "A", 3, "100", "completed"),
-               run(suite, "q", "B", 1, "10", "time limit"),
-               run(suite, "q", "B", 2, "10", "time limit"),
-               run(suite, "q", "B", 3, "10", "time limit")};
+  o.results = {
+      run(suite, "p", "A", 1, "1", "completed"),      run(suite, "p", "A", 2, "1", "completed"),
+      run(suite, "p", "A", 3, "1", "completed"),      run(suite, "p", "B", 1, "2", "completed"),
+      run(suite, "p", "B", 2, "3", "target reached"), run(suite, "p", "B", 3, "10", "time limit"),
+      run(suite, "q", "A", 1, "4", "proven optimal"), run(suite, "q", "A", 2, "4", "completed"),
+      run(suite, "q", "A", 3, "100", "completed"),    run(suite, "q", "B", 1, "10", "time limit"),
+      run(suite, "q", "B", 2, "10", "time limit"),    run(suite, "q", "B", 3, "10", "time limit")};
   o.total = o.results.size();
   return o;
 }
