@@ -195,14 +195,15 @@ void add_comparison(Suite& suite, const std::string& a, const std::string& b,
   };
   for (const std::string& name : {a, b})
     if (!contains(camera, name) && !contains(problems, name))
-      throw csp::InputError(where, "compare: '" + name + "' is not a solver of suite '" +
-                                       suite.name + "'; " + solvers_text());
+      throw csp::InputError(
+          where, "'" + name + "' is not a solver of suite '" + suite.name + "'; " + solvers_text());
   if (a == b)
-    throw csp::InputError(where, "compare: expected two different solvers, got '" + a + "' twice");
+    throw csp::InputError(where,
+                          "expected two different solvers to compare, got '" + a + "' twice");
   const bool same_family = (contains(camera, a) && contains(camera, b)) ||
                            (contains(problems, a) && contains(problems, b));
   if (!same_family)
-    throw csp::InputError(where, "compare: '" + a + "' and '" + b +
+    throw csp::InputError(where, "'" + a + "' and '" + b +
                                      "' are not solvers of one family (camera or problems); " +
                                      solvers_text());
   suite.comparisons.push_back({a, b, where});

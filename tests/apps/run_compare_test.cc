@@ -56,7 +56,7 @@ TEST(RunCompare, AnUnknownSolverIsRefusedBeforeAnyRun) {
   const Outcome r =
       run("run '" + s.path("suite.yaml") + "' --out '" + s.path("out") + "' --compare sls,tabuu");
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_TRUE(contains(r.output, "--compare: compare: 'tabuu' is not a solver")) << r.output;
+  EXPECT_TRUE(contains(r.output, "--compare: 'tabuu' is not a solver")) << r.output;
   EXPECT_FALSE(fs::exists(s.path("out/results.csv")));
 }
 
