@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "experiments/statistics.h"
@@ -96,10 +97,11 @@ RankingTable make_table(const Suite& suite, const SuiteOutcome& outcome, const s
   const std::vector<std::string> columns = metric_columns(suite);
   const double limit = kind == "toy" ? problem_time_limit(suite, outcome) : 0.0;
   std::map<std::pair<std::string, std::string>, std::vector<double>> losses;
+  std::set<std::string> seen;  // subjects
   for (const RunResult& r : outcome.results) {
     if (r.kind != kind || !contains(t.solvers, r.solver)) continue;
     const std::string subject = subject_of(suite, r);
-    if (!contains(t.subjects, subject)) t.subjects.push_back(subject);
+    if (seen.insert(subject).second) t.subjects.push_back(subject);
     double loss = kInfinity;
     if (t.metric == "par2_s") {
       const TimedRun timed = problem_timed_run(columns, r);
@@ -172,7 +174,7 @@ std::string direction(const PairOutcome& p, const std::string& a, const std::str
                             : p.test.w_plus < p.test.w_minus ? "`" + b + "` ahead"
                                                              : "even";
   if (p.test.p_value < 0.05 && ahead != "even")
-    return "**" + ahead.substr(0, ahead.size() - 6) + " better** (p < 0.05)";
+    return ahead.substr(0, ahead.size() - 6) + " better (p < 0.05)";
   return "not significant at 5% (" + ahead + ")";
 }
 
@@ -283,8 +285,9 @@ std::string ranking_markdown(const Suite& suite, const SuiteOutcome& outcome) {
           << first.solvers.size() - 1
           << " degrees of freedom, corrected for ties) asks whether the solvers differ at all.";
       if (complete.size() < first.subjects.size())
-        out << " Left out: " << first.subjects.size() - complete.size()
-            << " subjects where some solver has no finished run yet.";
+        out << " Left out (some solver has no finished run there yet): "
+            << first.subjects.size() - complete.size() << " of " << first.subjects.size()
+            << " subjects.";
       out << "\n\n| solver |";
       for (const RankingTable* t : family) out << ' ' << t->metric << " |";
       out << "\n| --- |";
