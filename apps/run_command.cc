@@ -1,15 +1,17 @@
-// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--no-report]`: runs an
-// experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes DIR/results.csv,
-// DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints the Markdown
-// summary. Exits 1 when a run failed, 2 for a bad suite file.
+// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--compare A,B] [--no-report]`:
+// runs an experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes
+// DIR/results.csv, DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints
+// the Markdown summary. Exits 1 when a run failed, 2 for a bad suite file.
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
 #include "experiments/report.h"
 #include "experiments/suite.h"
+#include "experiments/suite_ranking.h"
 #include "experiments/suite_runner.h"
 
 namespace sightline::apps {
@@ -21,10 +23,12 @@ struct RunOptions {
   unsigned jobs = 0;
   std::size_t max_runs = 0;
   bool no_report = false;
+  std::vector<std::string> compare;  // "A,B" pairs for the Wilcoxon test
 };
 
 void run_suite_command(const RunOptions& o) {
-  const experiments::Suite suite = experiments::read_suite_file(o.suite);
+  experiments::Suite suite = experiments::read_suite_file(o.suite);
+  for (const std::string& pair : o.compare) experiments::add_comparison_option(suite, pair);
   experiments::RunnerOptions runner;
   runner.out_dir = o.out;
   runner.jobs = o.jobs;
@@ -56,6 +60,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--max-runs", options->max_runs,
                   "stop after this many new runs (the rest resume next time)")
       ->check(unsigned_integer());
+  cmd->add_option("--compare", options->compare,
+                  "A,B: a Wilcoxon signed-rank test between solvers A and B in the summary "
+                  "(repeatable)")
+      ->allow_extra_args(false);
   cmd->add_flag("--no-report", options->no_report, "skip report.html");
   cmd->callback([options] { run_suite_command(*options); });
 }

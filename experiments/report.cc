@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "experiments/independent_check.h"
+#include "experiments/report_statistics.h"
 #include "experiments/report_views.h"
 
 namespace sightline::experiments {
@@ -211,6 +212,7 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
       << html_escape(suite.name) << "</title><style>" << kStyle << "</style></head><body>";
   out << "<h1>sightline: suite <code>" << html_escape(suite.name) << "</code></h1>";
   out << markdown_to_html(markdown_summary(suite, outcome));
+  out << statistics_report_section(suite, outcome);  // cactus plot, performance profile
 
   // Colours by solver label, stable across scenes.
   std::map<std::string, std::string> colour;

@@ -15,6 +15,7 @@
 #include "domains/camera/profile_file.h"
 #include "domains/camera/scene_file.h"
 #include "experiments/suite_problem.h"
+#include "experiments/suite_ranking.h"
 #include "solvers/registry.h"
 
 namespace sightline::experiments {
@@ -364,7 +365,7 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
 
 Suite parse_suite(const csp::Spec& document, const std::string& base_dir) {
   if (!document.is_map()) document.fail("expected a suite: a mapping with name, camera, problems");
-  document.check_keys({"name", "description", "camera", "problems", "report"});
+  document.check_keys({"name", "description", "camera", "problems", "report", "statistics"});
   camera::solver_registry();  // the camera's solvers join the registry before any lookup
   Suite suite;
   suite.name = document.at("name").as_string("a suite name");
@@ -382,6 +383,7 @@ Suite parse_suite(const csp::Spec& document, const std::string& base_dir) {
   if (suite.scenes.empty() && suite.problems.empty()) {
     document.fail("a suite needs a `camera:` section, a `problems:` section, or both");
   }
+  if (const Spec* s = document.find("statistics")) read_statistics_settings(*s, suite);
   return suite;
 }
 

@@ -74,6 +74,13 @@ struct SuiteToySolver {
   csp::SourceLocation where;
 };
 
+// A pair of solvers (labels of one family, camera or problems) to compare with the Wilcoxon
+// signed-rank test in the summary (`statistics: {compare: [a, b]}` or `run --compare a,b`).
+struct SuiteComparison {
+  std::string a, b;
+  csp::SourceLocation where;
+};
+
 struct Suite {
   std::string name;
   std::string description;
@@ -91,6 +98,9 @@ struct Suite {
 
   // Report settings: how many frames of each scene are shown from the main camera.
   int camera_view_frames = 3;
+
+  // Statistics settings: the pairs to compare (experiments/suite_ranking.h).
+  std::vector<SuiteComparison> comparisons;
 };
 
 // One combination. Indices point into the Suite's lists.

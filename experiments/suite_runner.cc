@@ -349,7 +349,8 @@ SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
     outcome.results.push_back(r);
   }
   write_atomically((out / "results.csv").string(), csv.str());
-  write_atomically((out / "stats.csv").string(), statistics_csv(suite, outcome));
+  for (const auto& [name, text] : statistics_files(suite, outcome))
+    write_atomically((out / name).string(), text);  // stats.csv, cactus.csv, profiles.csv
   return outcome;
 }
 

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "experiments/statistics.h"
+#include "experiments/suite_ranking.h"
+#include "experiments/time_profiles.h"
 
 namespace sightline::experiments {
 namespace {
@@ -51,9 +53,6 @@ struct Statistics {
 
 Statistics compute(const Suite& suite, const SuiteOutcome& outcome) {
   const std::vector<std::string> columns = metric_columns(suite);
-  auto text = [&](const RunResult& r, const std::string& name) {
-    return metric_text(columns, r, name);
-  };
   auto value = [&](const RunResult& r, const std::string& name) {
     return metric_value(columns, r, name);
   };
@@ -91,26 +90,17 @@ Statistics compute(const Suite& suite, const SuiteOutcome& outcome) {
     s.groups.push_back(std::move(g));
   }
 
-  // PAR-2 per toy solver, when there are several to compare.
+  // PAR-2 per toy solver, when there are several to compare (time_profiles.h says what
+  // counts as solved and which time limit applies).
   std::vector<std::string> solvers;
   std::map<std::string, std::vector<TimedRun>> timed;
-  double slowest = 0;
   for (const RunResult& r : outcome.results) {
     if (r.kind != "toy") continue;
-    const double seconds = value(r, "time_s");
-    if (!std::isnan(seconds)) slowest = std::max(slowest, seconds);
-    const std::string stop = text(r, "stop");
-    const bool solved =
-        r.status == "ok" && value(r, "feasible") == 1.0 &&
-        (stop == "completed" || stop == "proven optimal" || stop == "target reached") &&
-        !std::isnan(seconds);
     if (!timed.count(r.solver)) solvers.push_back(r.solver);
-    timed[r.solver].push_back({solved, std::isnan(seconds) ? 0.0 : seconds});
+    timed[r.solver].push_back(problem_timed_run(columns, r));
   }
   if (solvers.size() > 1) {
-    const double limit = suite.toy_limits.time_limit_seconds > 0
-                             ? suite.toy_limits.time_limit_seconds
-                             : std::max(slowest, 1e-6);  // all-zero times: any positive limit
+    const double limit = problem_time_limit(suite, outcome);
     for (const std::string& solver : solvers) {
       const auto& rs = timed[solver];
       const std::size_t solved = cactus_curve(rs, limit).size();
@@ -152,6 +142,7 @@ std::string statistics_markdown(const Suite& suite, const SuiteOutcome& outcome)
           << " |\n";
     out << '\n';
   }
+  out << ranking_markdown(suite, outcome);  // average ranks, Friedman, Wilcoxon on demand
   return out.str();
 }
 
@@ -181,7 +172,20 @@ std::string statistics_csv(const Suite& suite, const SuiteOutcome& outcome) {
         << prefix << "par2_s," << number(p.par2) << '\n'
         << prefix << "time_limit_s," << number(p.time_limit) << '\n';
   }
+  out << ranking_csv_rows(suite, outcome);
   return out.str();
+}
+
+std::vector<std::pair<std::string, std::string>> statistics_files(const Suite& suite,
+                                                                  const SuiteOutcome& outcome) {
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"stats.csv", statistics_csv(suite, outcome)}};
+  const TimeProfiles profiles = problem_time_profiles(suite, outcome);
+  if (!profiles.solvers.empty()) {
+    files.emplace_back("cactus.csv", cactus_csv(profiles));
+    files.emplace_back("profiles.csv", profiles_csv(profiles));
+  }
+  return files;
 }
 
 }  // namespace sightline::experiments

@@ -14,10 +14,13 @@
 //   kind,subject,solver,profile,metric,statistic,value
 // statistic is n, median, mean, mean_ci_low, mean_ci_high, median_ci_low, median_ci_high;
 // PAR-2 rows have subject "*", metric "time_s" and statistic runs, solved, par2_s,
-// time_limit_s.
+// time_limit_s. Ranking rows (average ranks, Friedman, Wilcoxon) follow: suite_ranking.h.
+// Problem suites also get OUT/cactus.csv and OUT/profiles.csv (time_profiles.h).
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "experiments/suite.h"
 #include "experiments/suite_runner.h"
@@ -29,5 +32,10 @@ std::string statistics_markdown(const Suite& suite, const SuiteOutcome& outcome)
 
 // stats.csv's text: the header line, then the rows described above (possibly none).
 std::string statistics_csv(const Suite& suite, const SuiteOutcome& outcome);
+
+// Every statistics file of the output folder as (file name, text): stats.csv always, and
+// cactus.csv and profiles.csv when the suite has problem runs.
+std::vector<std::pair<std::string, std::string>> statistics_files(const Suite& suite,
+                                                                  const SuiteOutcome& outcome);
 
 }  // namespace sightline::experiments
