@@ -179,6 +179,35 @@ problems:
   EXPECT_NE(r.output.find("2 of 2 runs finished"), std::string::npos) << r.output;
 }
 
+TEST(MpiRun, HandsOutTheLongestExpectedRunsFirst) {
+  SKIP_WITHOUT_MPI();
+  ScratchDir dir("mpi-order");
+  // Neither 2 nor 3 queens can be placed, so sls uses its whole 0.1 s on each run; the
+  // dispatcher expects the bigger problem to take longer (experiments/run_order.h).
+  const std::string suite_file = dir.write("suite.yaml", R"(name: order
+problems:
+  instances: [{nqueens: [2, 3]}]
+  solvers: [sls]
+  seeds: [1, 2]
+  limits: {time_seconds: 0.1}
+)");
+  const std::vector<SuiteRun> runs = expand_runs(read_suite_file(suite_file));
+  ASSERT_EQ(runs.size(), 4u);
+  // One worker records the runs one after another, in the order it was given them.
+  const Outcome r = mpi_run(2, suite_file, dir.path("out"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::vector<std::pair<long long, std::string>> by_time;
+  for (const auto& [id, written] : finished_runs(dir.path("out"))) {
+    by_time.emplace_back(written.mtime_ns, id);
+  }
+  std::sort(by_time.begin(), by_time.end());
+  ASSERT_EQ(by_time.size(), 4u);
+  EXPECT_EQ(by_time[0].second, runs[2].id);  // 3-queens, seed 1
+  EXPECT_EQ(by_time[1].second, runs[3].id);
+  EXPECT_EQ(by_time[2].second, runs[0].id);  // 2-queens, seed 1
+  EXPECT_EQ(by_time[3].second, runs[1].id);
+}
+
 // 16 runs of about 0.15 s each: 3-queens has no solution, so sls searches until its limit.
 const char* kSlowSuite = R"(name: slow
 problems:
