@@ -208,6 +208,31 @@ std::pair<int, std::string> receive_from_a_worker() {
   return {status.MPI_SOURCE, text};
 }
 
+// The folder once the runs are in. On NFS rank 0's node may still remember that a result
+// file did not exist (negative lookup caching) for a while after another node renamed it
+// into place: until the directory's cached attributes expire, up to acdirmax, 60 s by
+// default. So the folder is read again, once a second for up to 90 s, until every run a
+// worker reported as recorded shows; a coherent file system (a local disk, Lustre, GPFS)
+// shows them at the first reading.
+SuiteState read_finished_state(const Suite& suite, const std::string& out_dir,
+                               const std::vector<std::size_t>& recorded) {
+  constexpr int kPatienceSeconds = 90;
+  for (int waited = 0;; ++waited) {
+    SuiteState state = read_suite_state(suite, out_dir);
+    std::size_t missing = 0;
+    for (const std::size_t i : recorded) missing += state.finished[i] ? 0 : 1;
+    if (missing == 0) return state;
+    if (waited == kPatienceSeconds) {
+      throw std::runtime_error(
+          std::to_string(missing) + " run(s) reported as recorded do not show in " + out_dir +
+          "/runs after " + std::to_string(kPatienceSeconds) +
+          " s (a file system that is not coherent between nodes?); submit the same command "
+          "again to tabulate them");
+    }
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+}
+
 // SIGHTLINE_TEST_ABORT_AFTER_RUNS="RANK:K" (a test hook, mpi_engine.h): K for this rank,
 // 0 when unset, malformed or for another rank.
 std::size_t abort_after_runs(int rank) {
@@ -294,7 +319,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
     order.resize(options.max_new_runs);
   }
   Progress progress(options.progress, state.runs.size(), state.reused, order.size(), mpi.size());
-  std::size_t ran = 0;
+  std::vector<std::size_t> recorded;  // runs whose worker (or rank 0) reported them done
   std::string write_error;
   if (mpi.size() == 1) {  // no workers: rank 0 runs everything itself
     for (const std::size_t i : order) {
@@ -304,7 +329,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
         write_error = e.what();
         break;
       }
-      ++ran;
+      recorded.push_back(i);
       progress.finished_one();
     }
   } else {
@@ -315,7 +340,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
     while (working > 0) {
       const auto [worker, text] = receive_from_a_worker();
       if (text.rfind("done ", 0) == 0) {
-        ++ran;
+        recorded.push_back(std::stoull(text.substr(5)));
         progress.finished_one();
       } else if (text.rfind("error ", 0) == 0 && write_error.empty()) {
         write_error = text.substr(6);
@@ -331,10 +356,10 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
   if (!write_error.empty()) throw std::runtime_error(write_error);
 
   // The folder is the truth: read it again, as the local runner's state would be.
-  const SuiteState finished = read_suite_state(suite, options.out_dir);
+  const SuiteState finished = read_finished_state(suite, options.out_dir, recorded);
   SuiteOutcome outcome = write_suite_outputs(suite, options.out_dir, finished);
   outcome.reused = state.reused;
-  outcome.ran = ran;
+  outcome.ran = recorded.size();
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_atomically((fs::path(options.out_dir) / "summary.md").string(),
                    markdown_summary(suite, outcome));
