@@ -13,6 +13,8 @@
 //   overhead per run = (W x (T_full - T_fixed) - T_runs) / runs: worker time a run costs
 //            beyond its own execution (hand-out, messages, idle workers, contention).
 // Medians over the repeats. A plain program, not Google Benchmark: it times whole commands.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -25,8 +27,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "experiments/suite.h"
 #include "experiments/suite_runner.h"
@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-mpi", no_mpi, "time the thread pool only");
   CLI11_PARSE(app, argc, argv);
 
-  const fs::path dir = fs::temp_directory_path() /
-                       ("sightline-dispatch-bench-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("sightline-dispatch-bench-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path suite_file = dir / "suite.yaml";
@@ -122,24 +122,24 @@ int main(int argc, char** argv) {
   }
   const double t_runs = median(alone);
 
-  const std::string program = std::string("'") + SIGHTLINE_BINARY + "' run '" +
-                              suite_file.string() + "'";
+  const std::string program =
+      std::string("'") + SIGHTLINE_BINARY + "' run '" + suite_file.string() + "'";
   struct Row {
     std::string engine;
     Figures figures;
   };
   std::vector<Row> rows;
-  rows.push_back({"thread pool, --jobs " + std::to_string(workers),
-                  time_engine(program + " --jobs " + std::to_string(workers), dir / "local",
-                              repeats)});
+  rows.push_back(
+      {"thread pool, --jobs " + std::to_string(workers),
+       time_engine(program + " --jobs " + std::to_string(workers), dir / "local", repeats)});
   if (!no_mpi) {
     ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
     ::setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
-    rows.push_back({"MPI, mpirun -np " + std::to_string(workers + 1),
-                    time_engine("mpirun --oversubscribe -np " + std::to_string(workers + 1) +
-                                    " " + program,
-                                dir / "mpi", repeats)});
+    rows.push_back(
+        {"MPI, mpirun -np " + std::to_string(workers + 1),
+         time_engine("mpirun --oversubscribe -np " + std::to_string(workers + 1) + " " + program,
+                     dir / "mpi", repeats)});
   }
 
   std::cout << runs << " runs (8-queens, bnb), " << workers << " workers, median of " << repeats
@@ -148,8 +148,7 @@ int main(int argc, char** argv) {
             << "| engine | command, " << runs << " runs | command, nothing to run | "
             << "overhead per run |\n| --- | ---: | ---: | ---: |\n";
   for (const Row& row : rows) {
-    const double overhead =
-        (workers * (row.figures.full - row.figures.fixed) - t_runs) / runs;
+    const double overhead = (workers * (row.figures.full - row.figures.fixed) - t_runs) / runs;
     std::cout << "| " << row.engine << " | " << ms(row.figures.full) << " | "
               << ms(row.figures.fixed) << " | " << us(overhead) << " |\n";
   }

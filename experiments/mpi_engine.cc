@@ -139,8 +139,13 @@ std::string clock_text(double seconds) {
 class Progress {
  public:
   Progress(bool enabled, std::size_t total, std::size_t reused, std::size_t to_run, int ranks)
-      : enabled_(enabled), in_place_(::isatty(STDERR_FILENO) != 0), total_(total),
-        done_(reused), reused_(reused), start_(Clock::now()), last_line_(start_) {
+      : enabled_(enabled),
+        in_place_(::isatty(STDERR_FILENO) != 0),
+        total_(total),
+        done_(reused),
+        reused_(reused),
+        start_(Clock::now()),
+        last_line_(start_) {
     if (!enabled_) return;
     std::cerr << "MPI: " << ranks << " ranks; " << total << " runs, " << reused
               << " finished before, " << to_run << " to run now\n";
@@ -298,8 +303,8 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
     mpi.finish();
     throw std::runtime_error(error);
   }
-  int differs = !dispatcher && (!error.empty() || runs.size() != header[1] ||
-                                ids_hash(runs) != header[2]);
+  int differs =
+      !dispatcher && (!error.empty() || runs.size() != header[1] || ids_hash(runs) != header[2]);
   int any_differs = 0;
   MPI_Allreduce(&differs, &any_differs, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   if (any_differs) {

@@ -16,9 +16,14 @@ double solver_seconds_per_frame(std::string_view name) {
     double seconds;
   };
   static constexpr Guess kGuesses[] = {
-      {"ceres-refine", 5e-3},    {"grid", 2e-3},          {"sls", 5e-4},
-      {"sliding-octree", 3e-4},  {"occlusion-octree", 1.5e-4}, {"bourne-octree", 5e-5},
-      {"spring-arm", 3e-5},      {"pull-forward", 3e-5},
+      {"ceres-refine", 5e-3},
+      {"grid", 2e-3},
+      {"sls", 5e-4},
+      {"sliding-octree", 3e-4},
+      {"occlusion-octree", 1.5e-4},
+      {"bourne-octree", 5e-5},
+      {"spring-arm", 3e-5},
+      {"pull-forward", 3e-5},
   };
   for (const Guess& g : kGuesses) {
     if (name == g.name) return g.seconds;
@@ -79,7 +84,8 @@ double expected_run_seconds(const Suite& suite, const SuiteRun& run) {
       break;
   }
   double seconds = std::max(1.0, size) * toy_seconds_per_unit(suite.toy_solvers[run.solver].name);
-  if (suite.toy_limits.time_limit_seconds > 0) seconds = std::min(seconds, suite.toy_limits.time_limit_seconds);
+  if (suite.toy_limits.time_limit_seconds > 0)
+    seconds = std::min(seconds, suite.toy_limits.time_limit_seconds);
   return seconds;
 }
 

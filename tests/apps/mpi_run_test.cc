@@ -40,7 +40,8 @@ Outcome shell(const std::string& command) {
   FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return r;
   char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.output.append(buffer, n);
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
+    r.output.append(buffer, n);
   const int raw = pclose(pipe);
   if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
   return r;
@@ -56,8 +57,8 @@ Outcome mpi_run(int ranks, const std::string& suite, const std::string& out,
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   ::setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
   return shell("env " + environment + " timeout -k 5 60 mpirun --oversubscribe -np " +
-               std::to_string(ranks) + " '" SIGHTLINE_BINARY "' run '" + suite + "' --out '" +
-               out + "' --no-report");
+               std::to_string(ranks) + " '" SIGHTLINE_BINARY "' run '" + suite + "' --out '" + out +
+               "' --no-report");
 }
 
 #define SKIP_WITHOUT_MPI()                                                         \
@@ -153,9 +154,11 @@ TEST(MpiRun, WritesTheSameResultsAsTheThreadPoolApartFromTiming) {
   const Outcome r = mpi_run(3, suite_file, dir.path("mpi"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("MPI: 3 ranks; 8 runs, 0 finished before, 8 to run now"),
-            std::string::npos) << r.output;
+            std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("8 of 8 runs finished (0 from an earlier invocation, 8 now)"),
-            std::string::npos) << r.output;
+            std::string::npos)
+      << r.output;
   const std::string mpi_csv = read_text(dir.path("mpi/results.csv"));
   EXPECT_EQ(std::count(mpi_csv.begin(), mpi_csv.end(), '\n'), 9);
   EXPECT_EQ(without_timing(suite, mpi_csv),
@@ -208,14 +211,19 @@ problems:
   EXPECT_EQ(by_time[3].second, runs[1].id);
 }
 
-// 16 runs of about 0.15 s each: 3-queens has no solution, so sls searches until its limit.
+// 24 runs of about 0.15 s each: 3-queens has no solution, so sls searches until its limit.
+// (Open MPI takes about a second to bring a job down after a rank died: with 16 runs the
+// surviving worker got through 8 more meanwhile.)
 const char* kSlowSuite = R"(name: slow
 problems:
   instances: [{nqueens: [3]}]
   solvers: [sls]
-  seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]
+  seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23,
+          24]
   limits: {time_seconds: 0.15}
 )";
+
+constexpr std::size_t kSlowRuns = 24;
 
 TEST(MpiRun, AJobSubmittedAgainAfterARankDiedLosesAndRedoesNoFinishedRun) {
   SKIP_WITHOUT_MPI();
@@ -229,19 +237,21 @@ TEST(MpiRun, AJobSubmittedAgainAfterARankDiedLosesAndRedoesNoFinishedRun) {
   EXPECT_NE(died.status, 124) << "the job hung instead of ending: " << died.output;
   const std::map<std::string, Written> before = finished_runs(out);
   ASSERT_GE(before.size(), 2u) << died.output;  // at least rank 1's two recorded runs
-  ASSERT_LT(before.size(), 16u) << "the job was not cut short: " << died.output;
+  ASSERT_LT(before.size(), kSlowRuns) << "the job was not cut short: " << died.output;
   EXPECT_FALSE(fs::exists(fs::path(out) / "results.csv"));
 
   // The same command again: only the unfinished runs are done.
   const Outcome again = mpi_run(3, suite_file, out);
   ASSERT_EQ(again.status, 0) << again.output;
   const std::size_t n = before.size();
-  EXPECT_NE(again.output.find("16 of 16 runs finished (" + std::to_string(n) +
-                              " from an earlier invocation, " + std::to_string(16 - n) + " now)"),
-            std::string::npos)
+  EXPECT_NE(
+      again.output.find(std::to_string(kSlowRuns) + " of " + std::to_string(kSlowRuns) +
+                        " runs finished (" + std::to_string(n) + " from an earlier invocation, " +
+                        std::to_string(kSlowRuns - n) + " now)"),
+      std::string::npos)
       << again.output;
   const std::map<std::string, Written> after = finished_runs(out);
-  EXPECT_EQ(after.size(), 16u);
+  EXPECT_EQ(after.size(), kSlowRuns);
   for (const auto& [id, written] : before) {
     ASSERT_TRUE(after.count(id)) << id;
     EXPECT_EQ(after.at(id), written) << id << " was written again";
@@ -253,7 +263,7 @@ TEST(MpiRun, AJobSubmittedAgainAfterARankDiedLosesAndRedoesNoFinishedRun) {
   std::getline(lines, line);  // header
   std::multiset<std::string> ids;
   while (std::getline(lines, line)) ids.insert(line.substr(0, line.find(',')));
-  EXPECT_EQ(ids.size(), 16u);
+  EXPECT_EQ(ids.size(), kSlowRuns);
   for (const auto& [id, written] : after) EXPECT_EQ(ids.count(id), 1u) << id;
   for (const auto& entry : fs::directory_iterator(fs::path(out) / "runs")) {
     EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
@@ -274,7 +284,8 @@ TEST(MpiRun, FinishesASuiteStartedByTheThreadPool) {
   const Outcome r = mpi_run(3, suite_file, dir.path("out"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("8 of 8 runs finished (3 from an earlier invocation, 5 now)"),
-            std::string::npos) << r.output;
+            std::string::npos)
+      << r.output;
   const std::map<std::string, Written> after = finished_runs(dir.path("out"));
   EXPECT_EQ(after.size(), 8u);
   for (const auto& [id, written] : before) EXPECT_EQ(after.at(id), written) << id;
@@ -294,7 +305,8 @@ TEST(MpiRun, RefusesAnUnwritableFolderOnceAndEveryRankExits) {
   EXPECT_NE(r.status, 0) << r.output;
   EXPECT_NE(r.status, 124) << "the job hung: " << r.output;
   EXPECT_NE(r.output.find("sightline: cannot create " + blocker + "/out/runs: Not a directory"),
-            std::string::npos) << r.output;
+            std::string::npos)
+      << r.output;
   // Said by rank 0 alone.
   std::size_t said = 0;
   for (std::size_t at = r.output.find("sightline: "); at != std::string::npos;
@@ -314,8 +326,7 @@ TEST(MpiRun, StopsEveryRankWhenARunCannotBeRecorded) {
   const Outcome r = mpi_run(3, suite_file, dir.path("out"));
   EXPECT_NE(r.status, 0) << r.output;
   EXPECT_NE(r.status, 124) << "the job hung: " << r.output;
-  EXPECT_NE(r.output.find("run " + runs[5].id + ": cannot write"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("run " + runs[5].id + ": cannot write"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir.path("out/results.csv")));
   // No runs were handed out after the failure: fewer than all finished.
   EXPECT_LT(finished_runs(dir.path("out")).size(), runs.size() - 1);
