@@ -46,6 +46,24 @@ int mpi_launch_size() {
   return 1;
 }
 
+SuiteState read_recorded_state(const Suite& suite, const std::string& out_dir,
+                               const std::vector<std::size_t>& recorded, int patience_seconds) {
+  for (int waited = 0;; ++waited) {
+    SuiteState state = read_suite_state(suite, out_dir);
+    std::size_t missing = 0;
+    for (const std::size_t i : recorded) missing += state.finished.at(i) ? 0 : 1;
+    if (missing == 0) return state;
+    if (waited >= patience_seconds) {
+      throw std::runtime_error(
+          std::to_string(missing) + " run(s) reported as recorded do not show in " + out_dir +
+          "/runs after " + std::to_string(patience_seconds) +
+          " s (a file system that is not coherent between nodes?); submit the same command "
+          "again to tabulate them");
+    }
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+}
+
 #ifndef SIGHTLINE_HAVE_MPI
 
 bool mpi_engine_built() { return false; }
@@ -213,31 +231,6 @@ std::pair<int, std::string> receive_from_a_worker() {
   return {status.MPI_SOURCE, text};
 }
 
-// The folder once the runs are in. On NFS rank 0's node may still remember that a result
-// file did not exist (negative lookup caching) for a while after another node renamed it
-// into place: until the directory's cached attributes expire, up to acdirmax, 60 s by
-// default. So the folder is read again, once a second for up to 90 s, until every run a
-// worker reported as recorded shows; a coherent file system (a local disk, Lustre, GPFS)
-// shows them at the first reading.
-SuiteState read_finished_state(const Suite& suite, const std::string& out_dir,
-                               const std::vector<std::size_t>& recorded) {
-  constexpr int kPatienceSeconds = 90;
-  for (int waited = 0;; ++waited) {
-    SuiteState state = read_suite_state(suite, out_dir);
-    std::size_t missing = 0;
-    for (const std::size_t i : recorded) missing += state.finished[i] ? 0 : 1;
-    if (missing == 0) return state;
-    if (waited == kPatienceSeconds) {
-      throw std::runtime_error(
-          std::to_string(missing) + " run(s) reported as recorded do not show in " + out_dir +
-          "/runs after " + std::to_string(kPatienceSeconds) +
-          " s (a file system that is not coherent between nodes?); submit the same command "
-          "again to tabulate them");
-    }
-    std::this_thread::sleep_for(std::chrono::seconds(1));
-  }
-}
-
 // SIGHTLINE_TEST_ABORT_AFTER_RUNS="RANK:K" (a test hook, mpi_engine.h): K for this rank,
 // 0 when unset, malformed or for another rank.
 std::size_t abort_after_runs(int rank) {
@@ -361,7 +354,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
   if (!write_error.empty()) throw std::runtime_error(write_error);
 
   // The folder is the truth: read it again, as the local runner's state would be.
-  const SuiteState finished = read_finished_state(suite, options.out_dir, recorded);
+  const SuiteState finished = read_recorded_state(suite, options.out_dir, recorded);
   SuiteOutcome outcome = write_suite_outputs(suite, options.out_dir, finished);
   outcome.reused = state.reused;
   outcome.ran = recorded.size();

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "experiments/suite.h"
 #include "experiments/suite_runner.h"
@@ -49,6 +50,16 @@ struct MpiRunnerOptions {
   std::size_t max_new_runs = 0;  // > 0: hand out at most this many unfinished runs
   bool progress = true;          // rank 0's progress on stderr
 };
+
+// The folder once a job's runs are in: read_suite_state, read again once a second for up to
+// `patience_seconds` until every run in `recorded` (indices into expand_runs(suite)) shows as
+// finished. On NFS the dispatcher's node may remember for a while that a result file did not
+// exist (negative lookup caching) after another node renamed it into place: until the
+// directory's cached attributes expire, up to acdirmax, 60 s by default. A coherent file
+// system (a local disk, Lustre, GPFS) shows them at the first reading. Throws
+// std::runtime_error saying how many are missing when they do not show in time.
+SuiteState read_recorded_state(const Suite& suite, const std::string& out_dir,
+                               const std::vector<std::size_t>& recorded, int patience_seconds = 90);
 
 // Initialises MPI, runs the suite across the job's ranks and finalises MPI. Returns the
 // outcome on rank 0 (summary.md written) and nothing on the workers. Throws
