@@ -2,13 +2,17 @@
 // runs an experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes
 // DIR/results.csv, DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints
 // the Markdown summary. Exits 1 when a run failed, 2 for a bad suite file.
+// Started by mpirun with more than one process, the ranks share the suite instead
+// (experiments/mpi_engine.h, docs/CLUSTER.md): rank 0 prints and writes the report.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
+#include "experiments/mpi_engine.h"
 #include "experiments/report.h"
 #include "experiments/suite.h"
 #include "experiments/suite_ranking.h"
@@ -29,11 +33,22 @@ struct RunOptions {
 void run_suite_command(const RunOptions& o) {
   experiments::Suite suite = experiments::read_suite_file(o.suite);
   for (const std::string& pair : o.compare) experiments::add_comparison_option(suite, pair);
-  experiments::RunnerOptions runner;
-  runner.out_dir = o.out;
-  runner.jobs = o.jobs;
-  runner.max_new_runs = o.max_runs;
-  const experiments::SuiteOutcome outcome = experiments::run_suite(suite, runner);
+  experiments::SuiteOutcome outcome;
+  if (experiments::mpi_launch_size() > 1) {
+    // One run per rank: --jobs does not apply (docs/CLUSTER.md).
+    experiments::MpiRunnerOptions mpi;
+    mpi.out_dir = o.out;
+    mpi.max_new_runs = o.max_runs;
+    std::optional<experiments::SuiteOutcome> on_rank_0 = experiments::run_suite_mpi(suite, mpi);
+    if (!on_rank_0) return;  // a worker rank: rank 0 reports
+    outcome = std::move(*on_rank_0);
+  } else {
+    experiments::RunnerOptions runner;
+    runner.out_dir = o.out;
+    runner.jobs = o.jobs;
+    runner.max_new_runs = o.max_runs;
+    outcome = experiments::run_suite(suite, runner);
+  }
   std::cout << experiments::markdown_summary(suite, outcome);
   if (!o.no_report) experiments::write_report(suite, outcome, o.out);
   std::cout << "Results: " << o.out << "/results.csv" << (o.no_report ? "" : ", report: " + o.out + "/report.html")
