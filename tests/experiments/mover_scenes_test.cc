@@ -70,7 +70,9 @@ void expect_movers_well_formed(const camera::Scene& scene) {
       // On the ground and inside a sane world: a finite path is not enough if it runs 1 km.
       EXPECT_EQ(m.path()[k].position.y(), 0);
       EXPECT_LT(m.path()[k].position.norm(), 200);
-      if (k > 0) EXPECT_GT(m.path()[k].t, m.path()[k - 1].t);
+      if (k > 0) {
+        EXPECT_GT(m.path()[k].t, m.path()[k - 1].t);
+      }
     }
   }
 }
@@ -125,7 +127,9 @@ TEST(AnticipationScenes, ABusPassesBetweenTheCharacterAndTheKerbSheCameFrom) {
   EXPECT_GT(c.position.z(), 2.5);
   std::vector<camera::Aabb> buses;
   for (const camera::Mover& m : scene.movers())
-    if (m.name() == "bus-2") buses.push_back(m.box_at(17.5));
+    if (m.name() == "bus-2") {
+      buses.push_back(m.box_at(17.5));
+    }
   ASSERT_EQ(buses.size(), 1u);
   EXPECT_TRUE(segment_blocked(as_independent(buses), Eigen::Vector3d(-3, 2.5, -5),
                               scene.character().look_at(c.position)));
