@@ -269,11 +269,17 @@ camera::Scene generate_crossings(const CrossingOptions& options) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  // Pillars more than 1 m from every leg.
+  // Pillars more than 1 m from every leg, over the walk's bounds and 8 m around, widened to
+  // 30 m^2 of ground a pillar when there are many (benchmarks ask for 1,000).
+  const Eigen::Vector3d middle = (lo + hi) / 2;
+  const double half = std::max({(hi - lo).maxCoeff() / 2 + 8,
+                                std::sqrt(30.0 * static_cast<double>(options.pillars)) / 2});
   std::vector<camera::SolidBox> boxes;
-  for (int attempt = 0; boxes.size() < options.pillars && attempt < 1000; ++attempt) {
+  for (std::size_t attempt = 0; boxes.size() < options.pillars && attempt < 100 * options.pillars;
+       ++attempt) {
     const double w = between(0.4, 1.0), d = between(0.4, 1.0);
-    const Eigen::Vector3d c(between(lo.x() - 8, hi.x() + 8), 0, between(lo.z() - 8, hi.z() + 8));
+    const Eigen::Vector3d c(between(middle.x() - half, middle.x() + half), 0,
+                            between(middle.z() - half, middle.z() + half));
     const camera::Aabb box{{c.x() - w / 2, 0, c.z() - d / 2},
                            {c.x() + w / 2, between(2, 5), c.z() + d / 2}};
     bool clear = true;

@@ -47,7 +47,7 @@ camera::Scene generate_switchback(const SwitchbackOptions& options);
 struct CrossingOptions {
   std::uint64_t seed = 1;
   std::size_t movers = 10;       // how many movers cross
-  std::size_t pillars = 12;      // static pillars scattered away from the walk
+  std::size_t pillars = 12;      // static pillars scattered away from the walk (>= 1 m)
   double walk_seconds = 25;      // length of the character's walk
   double walk_speed = 1.4;       // m/s
   double vehicle_fraction = 0.2; // of the movers, the share that are vehicles (4-12 m/s)

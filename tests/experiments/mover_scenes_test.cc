@@ -262,5 +262,15 @@ TEST(GeneratedCrossings, EveryMoverCrossesTheSightLineOrThePathAndTheWalkStaysCl
   EXPECT_GE(across_sight_line, total / 2);
 }
 
+TEST(GeneratedCrossings, MakesTheBenchmarkSizeOfAThousandPillarsAndTwentyMovers) {
+  CrossingOptions options;
+  options.pillars = 1000;
+  options.movers = 20;
+  const camera::Scene scene = generate_crossings(options);
+  EXPECT_EQ(scene.solids().size(), 1000u);
+  EXPECT_EQ(scene.movers().size(), 20u);
+  EXPECT_EQ(frames_inside_a_box(scene), 0);
+}
+
 }  // namespace
 }  // namespace sightline::experiments
