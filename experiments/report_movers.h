@@ -31,6 +31,6 @@ std::vector<double> mover_mark_times(const RunDrawing& run, std::size_t limit = 
 // mover_mark_times() for those within `near` metres (ground distance) of the character then,
 // each labelled with its time. Empty when the scene has no movers.
 std::string movers_svg(const camera::Scene& scene, const RunDrawing& run, const ToPixel& to_pixel,
-                       double near = 10);
+                       double near = 6);
 
 }  // namespace sightline::experiments
