@@ -293,42 +293,66 @@ camera::Scene generate_crossings(const CrossingOptions& options) {
                                 walk(path, options.walk_speed), 60);
   const double t0 = walk_only.trajectory().start_time(), t1 = walk_only.trajectory().end_time();
   const Eigen::Vector3d kVehicles[] = {{4.5, 1.5, 1.9}, {5.5, 2.6, 2.1}, {12, 3.2, 2.5}};
+  // Before its first keyframe and after its last a mover stands still: where it stands must
+  // be clear of her walk (a bus parked on her path would hide her for the rest of the walk),
+  // and its straight walk must miss the pillars. A candidate that fails is drawn again (at
+  // most 50 times; then the last one is kept, so the count is always what was asked).
+  auto stands_clear = [&](const camera::Aabb& box) {
+    for (std::size_t k = 1; k < path.size(); ++k) {
+      if (ground_distance(box, path[k - 1], path[k]) < 1.5) return false;
+    }
+    return true;
+  };
+  auto misses_pillars = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius) {
+    for (const camera::SolidBox& pillar : boxes) {
+      if (ground_distance(pillar.box, a, b) < radius) return false;
+    }
+    return true;
+  };
   std::vector<camera::Mover> movers;
   for (std::size_t i = 0; i < options.movers; ++i) {
-    const bool vehicle = unit(rng) < options.vehicle_fraction;
-    const bool across_sight_line = unit(rng) < 2.0 / 3.0;
-    const double speed = vehicle ? between(4, 12) : between(0.8, 2.0);
-    const double t_cross = between(t0 + 1, std::max(t0 + 1, t1 - 1));
-    Eigen::Vector3d point, ahead;
-    if (across_sight_line) {
-      // Where the line from her to a chase camera behind her is at t_cross.
-      const camera::CharacterState c = walk_only.character_at(t_cross);
-      point = c.position - between(vehicle ? 0.6 : 0.3, 0.95) * options.camera_distance * c.facing();
-      ahead = c.facing();
-    } else {
-      // A point of her path she reaches 1.5-4 s before or after the mover crosses it.
-      const double when =
-          std::clamp(t_cross + (unit(rng) < 0.5 ? -1 : 1) * between(1.5, 4), t0, t1);
-      const camera::CharacterState c = walk_only.character_at(when);
-      point = c.position;
-      ahead = c.facing();
+    for (int attempt = 0;; ++attempt) {
+      const bool vehicle = unit(rng) < options.vehicle_fraction;
+      const bool across_sight_line = unit(rng) < 2.0 / 3.0;
+      const double speed = vehicle ? between(4, 12) : between(0.8, 2.0);
+      const double t_cross = between(t0 + 1, std::max(t0 + 1, t1 - 1));
+      Eigen::Vector3d point, ahead;
+      if (across_sight_line) {
+        // Where the line from her to a chase camera behind her is at t_cross.
+        const camera::CharacterState c = walk_only.character_at(t_cross);
+        point = c.position -
+                between(vehicle ? 0.6 : 0.3, 0.95) * options.camera_distance * c.facing();
+        ahead = c.facing();
+      } else {
+        // A point of her path she reaches 1.5-4 s before or after the mover crosses it.
+        const double when =
+            std::clamp(t_cross + (unit(rng) < 0.5 ? -1 : 1) * between(1.5, 4), t0, t1);
+        const camera::CharacterState c = walk_only.character_at(when);
+        point = c.position;
+        ahead = c.facing();
+      }
+      Eigen::Vector3d direction = turned(ahead, (unit(rng) < 0.5 ? -1 : 1) * between(50, 130));
+      Eigen::Vector3d size(0.5, between(1.6, 1.95), 0.5);
+      if (vehicle) {
+        // A vehicle's box is axis-aligned, so it drives along x or z: the axis most across her.
+        const bool along_x = std::abs(ahead.x()) < std::abs(ahead.z());
+        direction = along_x ? Eigen::Vector3d(direction.x() < 0 ? -1 : 1, 0, 0)
+                            : Eigen::Vector3d(0, 0, direction.z() < 0 ? -1 : 1);
+        const Eigen::Vector3d& v = kVehicles[std::uniform_int_distribution<int>(0, 2)(rng)];
+        size = along_x ? v : Eigen::Vector3d(v.z(), v.y(), v.x());
+      }
+      const double half = between(8, 14) + (vehicle ? size.maxCoeff() / 2 : 0);
+      const Eigen::Vector3d from = point - half * direction, to = point + half * direction;
+      const bool fits = stands_clear(camera::Aabb::around_feet(from, size)) &&
+                        stands_clear(camera::Aabb::around_feet(to, size)) &&
+                        misses_pillars(from, to, std::max(size.x(), size.z()) / 2 + 0.1);
+      if (!fits && attempt < 50) continue;
+      std::vector<camera::MoverKeyframe> keys{{t_cross - half / speed, from},
+                                              {t_cross + half / speed, to}};
+      movers.emplace_back((vehicle ? "vehicle-" : "passer-by-") + std::to_string(i), size,
+                          std::move(keys));
+      break;
     }
-    Eigen::Vector3d direction = turned(ahead, (unit(rng) < 0.5 ? -1 : 1) * between(50, 130));
-    Eigen::Vector3d size(0.5, between(1.6, 1.95), 0.5);
-    if (vehicle) {
-      // A vehicle's box is axis-aligned, so it drives along x or z: the axis most across her.
-      const bool along_x = std::abs(ahead.x()) < std::abs(ahead.z());
-      direction = along_x ? Eigen::Vector3d(direction.x() < 0 ? -1 : 1, 0, 0)
-                          : Eigen::Vector3d(0, 0, direction.z() < 0 ? -1 : 1);
-      const Eigen::Vector3d& v = kVehicles[std::uniform_int_distribution<int>(0, 2)(rng)];
-      size = along_x ? v : Eigen::Vector3d(v.z(), v.y(), v.x());
-    }
-    const double half = between(8, 14);
-    std::vector<camera::MoverKeyframe> keys{
-        {t_cross - half / speed, point - half * direction},
-        {t_cross + half / speed, point + half * direction}};
-    movers.emplace_back((vehicle ? "vehicle-" : "passer-by-") + std::to_string(i), size,
-                        std::move(keys));
   }
   return finish("crossings-" + std::to_string(options.movers) + "-seed-" +
                     std::to_string(options.seed),

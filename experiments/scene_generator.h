@@ -59,7 +59,9 @@ struct CrossingOptions {
 // line from the character to the point `camera_distance` behind her (where a chase camera is)
 // at a random fraction of it, at the moment they are there; the rest cross her path ahead of
 // her, a few seconds after or before she passes that point. Each mover walks a straight line
-// 8-14 m either side of its crossing point and stands still before and after.
+// 8-14 m either side of its crossing point (a vehicle half its length more) and stands still
+// before and after, 1.5 m or more from her walk, its way missing the pillars (redrawn until
+// it does, at most 50 times).
 camera::Scene generate_crossings(const CrossingOptions& options);
 
 }  // namespace sightline::experiments

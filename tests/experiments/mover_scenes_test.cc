@@ -7,6 +7,7 @@
 // with the scene's own BVH queries, so a bug in the index cannot vouch for a scene.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -28,6 +29,13 @@ bool interiors_overlap(const camera::Aabb& a, const camera::Aabb& b) {
     if (!(a.min[i] < b.max[i] && b.min[i] < a.max[i])) return false;
   }
   return true;
+}
+
+// Distance between two boxes in the ground plane (x, z), 0 when their footprints meet.
+double ground_gap(const camera::Aabb& a, const camera::Aabb& b) {
+  const double dx = std::max({a.min.x() - b.max.x(), b.min.x() - a.max.x(), 0.0});
+  const double dz = std::max({a.min.z() - b.max.z(), b.min.z() - a.max.z(), 0.0});
+  return std::hypot(dx, dz);
 }
 
 std::vector<SolidBox> as_independent(const std::vector<camera::Aabb>& boxes) {
@@ -256,6 +264,14 @@ TEST(GeneratedCrossings, EveryMoverCrossesTheSightLineOrThePathAndTheWalkStaysCl
                                              keys[k - 1].position, keys[k].position);
       }
       EXPECT_TRUE(blocks || crosses_path) << m.name();
+      // Standing still (before it sets off, after it arrives) it keeps a metre from her: a
+      // mover parked on her path would hide her for the rest of the walk.
+      for (std::size_t f = 0; f < scene.frame_count(); f += 6) {
+        const double t = scene.frame_time(f);
+        if (t >= m.path().front().t && t <= m.path().back().t) continue;
+        const camera::Aabb body = scene.character().body_at(scene.character_at(t).position);
+        EXPECT_GE(ground_gap(body, m.box_at(t)), 1.0) << m.name() << " at " << t << " s";
+      }
     }
   }
   // Two in three aim at the sight line; allow for chance over 60 movers.
