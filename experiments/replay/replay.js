@@ -272,8 +272,8 @@
     // three.js: one scene graph; the main-camera panels see layer 0 only.
     var scene = this.scene = new THREE.Scene();
     scene.background = new THREE.Color(0xd0d7de);
-    scene.add(new THREE.HemisphereLight(0xffffff, 0x808080, 0.55));
-    var sun = new THREE.DirectionalLight(0xffffff, 0.6);
+    scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8a8a, 0.75));
+    var sun = new THREE.DirectionalLight(0xffffff, 0.45);
     sun.position.set(0.4, 1, 0.25);
     scene.add(sun);
     var lo = d.bounds[0], hi = d.bounds[1];
@@ -613,7 +613,10 @@
       }
       r.resize();
       r.draw();
-      r.section.scrollIntoView({ block: 'start' });
+      // A solo canvas is fixed to the window: the page stays at the top (a scrolled page
+      // also confuses headless Chromium's --screenshot).
+      if (root.classList.contains('replay-solo')) window.scrollTo(0, 0);
+      else r.section.scrollIntoView({ block: 'start' });
       requestAnimationFrame(function () { requestAnimationFrame(function () { root.dataset.replay = 'ready'; }); });
     });
   }
