@@ -258,9 +258,9 @@
        'Drag to orbit, right-drag to pan, wheel to zoom. Keys: space play, arrows step.');
 
     var tl = el('div', 'replay-timeline', ui);
-    ui.back = el('button', 'replay-back', tl, '\u23ee frame');
+    ui.back = el('button', 'replay-back', tl, '\u25c0 frame');
     ui.play = el('button', 'replay-play', tl, '\u25b6 play');
-    ui.forward = el('button', 'replay-forward', tl, 'frame \u23ed');
+    ui.forward = el('button', 'replay-forward', tl, 'frame \u25b6');
     ui.speed = el('select', 'replay-speed', tl);
     [0.25, 0.5, 1, 2, 4].forEach(function (v) { el('option', '', ui.speed, v + 'x').value = v; });
     ui.speed.value = String(this.speed);
@@ -294,9 +294,10 @@
       // Box scenes stand on the ground y = 0, as in the report's ray-cast pictures.
       var size = Math.ceil(diag * 1.5);
       var ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(size, size),
-                                  new THREE.MeshLambertMaterial({ color: 0xc9c4b5 }));
-      ground.rotation.x = -Math.PI / 2;
-      ground.position.set(centre.x, -0.001, centre.z);
+                                  new THREE.MeshLambertMaterial({ color: 0xc9c4b5, polygonOffset: true,
+                                                                  polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+      ground.rotation.x = -Math.PI / 2;  // pushed back in depth so the grid lines on it win
+      ground.position.set(centre.x, 0, centre.z);
       scene.add(ground);
       var grid = new THREE.GridHelper(size, Math.min(400, size), 0x8d877b, 0xaaa494);
       grid.position.set(centre.x, 0, centre.z);
@@ -428,7 +429,7 @@
     var self = this;
     if (on === this.playing) return;
     this.playing = on;
-    this.ui.play.textContent = on ? '\u23f8 pause' : '\u25b6 play';
+    this.ui.play.textContent = on ? '\u2016 pause' : '\u25b6 play';
     if (!on) return;
     var run = this.data.runs[this.runA], end = run.frames ? run.trk[(run.frames - 1) * 5] : 0;
     if (this.time >= end) this.time = run.frames ? run.trk[0] : 0;
