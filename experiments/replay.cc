@@ -1,5 +1,6 @@
 #include "experiments/replay.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -159,14 +160,41 @@ std::string character_track(const std::vector<TraceRow>& trace) {
   return base64_of(out);
 }
 
-std::string run_json(const ReplayRun& run, int shared_track) {
-  std::vector<float> camera, target;
+// Camera and target positions are quantised to 16 bits over the scene's bounds (a step of
+// extent / 65535: about 1 mm over a 60 m scene), which halves the report's largest part;
+// exact Float32 would take the thesis report to 14.4 MB of its 15 MB budget. The grid's
+// origin and step are floats, so the page and the tests decode with the very numbers used.
+struct Grid {
+  Eigen::Vector3f origin;
+  float step = 1;
+  std::uint16_t quantise(double v, int axis) const {
+    const double q = std::round((v - origin[axis]) / static_cast<double>(step));
+    return static_cast<std::uint16_t>(std::clamp(q, 0.0, 65535.0));
+  }
+};
+
+Grid grid_over(const camera::Aabb& bounds) {
+  Grid g;
+  g.origin = bounds.min.cast<float>();
+  const double extent = (bounds.max - g.origin.cast<double>()).maxCoeff();
+  // Rounded up to a float that still covers the extent in 65535 steps.
+  g.step = std::nextafter(static_cast<float>(std::max(extent, 1e-3) / 65535), INFINITY);
+  return g;
+}
+
+std::string quantised(const std::vector<TraceRow>& trace, const Grid& grid, bool camera) {
+  std::vector<std::uint16_t> out;
+  out.reserve(trace.size() * 3);
+  for (const TraceRow& r : trace) {
+    const Eigen::Vector3d& p = camera ? r.camera : r.target;
+    for (int k = 0; k < 3; ++k) out.push_back(grid.quantise(p[k], k));
+  }
+  return base64_of(out);
+}
+
+std::string run_json(const ReplayRun& run, int shared_track, const Grid& grid) {
   std::vector<std::uint8_t> flags;
-  camera.reserve(run.trace.size() * 3);
-  target.reserve(run.trace.size() * 3);
   for (std::size_t i = 0; i < run.trace.size(); ++i) {
-    push3(camera, run.trace[i].camera);
-    push3(target, run.trace[i].target);
     flags.push_back(static_cast<std::uint8_t>((run.trace[i].cut ? 1 : 0) | (run.hidden[i] ? 2 : 0)));
   }
   std::ostringstream out;
@@ -177,8 +205,8 @@ std::string run_json(const ReplayRun& run, int shared_track) {
   } else {
     out << ",\"track\":\"" << character_track(run.trace) << "\"";
   }
-  out << ",\"camera\":\"" << base64_of(camera) << "\",\"target\":\"" << base64_of(target)
-      << "\",\"flags\":\"" << base64_of(flags) << "\"}";
+  out << ",\"camera_q\":\"" << quantised(run.trace, grid, true) << "\",\"target_q\":\""
+      << quantised(run.trace, grid, false) << "\",\"flags\":\"" << base64_of(flags) << "\"}";
   return out.str();
 }
 
@@ -192,11 +220,15 @@ std::string scene_json(const ReplayScene& rs) {
   for (const ReplayRun& run : rs.runs) {
     for (const TraceRow& r : run.trace) {
       bounds.merge(r.camera);
+      bounds.merge(r.target);
       bounds.merge(r.character);
     }
   }
   if (!std::isfinite(bounds.min.x())) bounds = {Eigen::Vector3d(-1, 0, -1), Eigen::Vector3d(1, 2, 1)};
   out << ",\"bounds\":[" << json_vec3(bounds.min) << "," << json_vec3(bounds.max) << "]";
+  const Grid grid = grid_over(bounds);
+  out << ",\"grid\":{\"origin\":" << json_vec3(grid.origin.cast<double>())
+      << ",\"step\":" << json_number(grid.step) << "}";
   out << ",\"character\":{\"size\":" << json_vec3(scene.character().size)
       << ",\"look_at_height\":" << json_number(scene.character().look_at_height) << "}";
 
@@ -272,7 +304,7 @@ std::string scene_json(const ReplayScene& rs) {
       }
     }
     if (shared < 0) owners.push_back(i);
-    out << (i ? "," : "") << run_json(rs.runs[i], shared);
+    out << (i ? "," : "") << run_json(rs.runs[i], shared, grid);
   }
   out << "]}";
   return out.str();

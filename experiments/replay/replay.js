@@ -32,7 +32,8 @@
  *  {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, movers [{name,
  *  size, keys [[t,x,y,z]...]}] (base centre, linear between keys, held outside), runs [{id,
  *  label, frames, track (Float32 t,x,y,z,yaw per frame) or track_of (index of the run whose
- *  track is the same), camera, target (Float32 xyz per frame), flags (Uint8: 1 cut, 2 hidden)}].
+ *  track is the same), camera_q, target_q (Uint16 xyz per frame on the scene's grid {origin,
+ *  step}: metres = origin + q * step), flags (Uint8: 1 cut, 2 hidden)}].
  */
 (function () {
   'use strict';
@@ -58,6 +59,12 @@
   function u16(b64) { var a = bytes(b64); return new Uint16Array(a.buffer, 0, a.length >> 1); }
   function u32(b64) { var a = bytes(b64); return new Uint32Array(a.buffer, 0, a.length >> 2); }
 
+  // Uint16 xyz triples on the scene's grid back to metres.
+  function dequantise(b64, grid) {
+    var q = u16(b64), out = new Float32Array(q.length), o = grid.origin, step = grid.step;
+    for (var i = 0; i < q.length; ++i) out[i] = o[i % 3] + q[i] * step;
+    return out;
+  }
   function el(tag, cls, parent, text) {
     var e = document.createElement(tag);
     if (cls) e.className = cls;
@@ -169,7 +176,7 @@
     d.boxArray = f32(d.boxes);
     d.areaArray = f32(d.areas);
     d.runs.forEach(function (r) {
-      r.cam = f32(r.camera); r.tgt = f32(r.target); r.flag = bytes(r.flags);
+      r.cam = dequantise(r.camera_q, d.grid); r.tgt = dequantise(r.target_q, d.grid); r.flag = bytes(r.flags);
       if (r.track) r.trk = f32(r.track);
     });
     d.runs.forEach(function (r) { if (!r.trk) r.trk = d.runs[r.track_of].trk; });

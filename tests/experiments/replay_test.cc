@@ -164,6 +164,13 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
   EXPECT_EQ(d["movers"][0]["keys"][1][0], 1.5);
   EXPECT_EQ(d["movers"][0]["keys"][1][3], 2.5);
 
+  // The quantisation grid spans the scene and the runs in 65535 steps, no coarser.
+  const double step = d["grid"]["step"];
+  const double origin[3] = {d["grid"]["origin"][0], d["grid"]["origin"][1], d["grid"]["origin"][2]};
+  EXPECT_LE(origin[0], -10.0);  // the level's corner
+  EXPECT_LE(step, 20.3 / 65535 * 1.0001);  // the level's z extent, the largest
+  EXPECT_GT(step, 20.3 / 65535 * 0.9999);
+
   ASSERT_EQ(d["runs"].size(), 2u);
   for (std::size_t r = 0; r < 2; ++r) {
     const ReplayRun& run = rs.runs[r];
@@ -172,8 +179,8 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
     EXPECT_EQ(j["frames"], run.trace.size());
     ASSERT_TRUE(j.contains("track")) << "run " << r << " has its own character";
     const std::vector<float> track = decode<float>(j["track"]);
-    const std::vector<float> camera = decode<float>(j["camera"]);
-    const std::vector<float> target = decode<float>(j["target"]);
+    const std::vector<std::uint16_t> camera = decode<std::uint16_t>(j["camera_q"]);
+    const std::vector<std::uint16_t> target = decode<std::uint16_t>(j["target_q"]);
     const std::vector<std::uint8_t> flags = decode<std::uint8_t>(j["flags"]);
     ASSERT_EQ(track.size(), run.trace.size() * 5);
     ASSERT_EQ(camera.size(), run.trace.size() * 3);
@@ -185,8 +192,10 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
       EXPECT_EQ(track[i * 5 + 4], static_cast<float>(row.character_yaw));
       for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(track[i * 5 + 1 + k], static_cast<float>(row.character[k]));
-        EXPECT_EQ(camera[i * 3 + k], static_cast<float>(row.camera[k]));
-        EXPECT_EQ(target[i * 3 + k], static_cast<float>(row.target[k]));
+        // Quantised: within half a step of the trace, as the page computes it (in doubles
+        // here, Float32 there: a float's rounding is far below the step).
+        EXPECT_NEAR(origin[k] + camera[i * 3 + k] * step, row.camera[k], step * 0.5 + 1e-9);
+        EXPECT_NEAR(origin[k] + target[i * 3 + k] * step, row.target[k], step * 0.5 + 1e-9);
       }
       EXPECT_EQ(flags[i], (row.cut ? 1 : 0) | (run.hidden[i] ? 2 : 0)) << "frame " << i;
     }
@@ -234,9 +243,9 @@ TEST(Replay, SectionSizeGrowsLinearlyWithFrames) {
   };
   const double s1 = size(500), s2 = size(1000), s4 = size(2000);
   EXPECT_NEAR((s4 - s2) / (s2 - s1), 2.0, 0.02);
-  // Per frame: one shared character track (5 floats) and per run camera, target (6 floats)
-  // and a flag byte, base64: (20 + 2 * 25) * 4 / 3 = 93.3 bytes.
-  EXPECT_NEAR((s2 - s1) / 500, 93.3, 1.0);
+  // Per frame: one shared character track (5 floats) and per run camera and target (6
+  // Uint16) and a flag byte, base64: (20 + 2 * 13) * 4 / 3 = 61.3 bytes.
+  EXPECT_NEAR((s2 - s1) / 500, 61.3, 1.0);
 }
 
 TEST(Replay, TextIsEscapedSoALabelCannotEndTheDataBlock) {
@@ -287,7 +296,7 @@ TEST(Replay, AssetsBesideWritesThreeJsAndSceneDataAsScriptsThePageReferences) {
   json = json.substr(0, json.rfind(';'));
   const nlohmann::json d = nlohmann::json::parse(json);
   EXPECT_EQ(d["runs"][0]["id"], "r1");
-  EXPECT_EQ(decode<float>(d["runs"][0]["camera"]).size(), 150u);
+  EXPECT_EQ(decode<std::uint16_t>(d["runs"][0]["camera_q"]).size(), 150u);
   std::filesystem::remove_all(dir);
 }
 
