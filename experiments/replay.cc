@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -210,6 +211,49 @@ std::string run_json(const ReplayRun& run, int shared_track, const Grid& grid) {
   return out.str();
 }
 
+// A level's triangles: written once per page however many scenes stand on it (the levels
+// suite has five walks per map), under a key that is a hash of the mesh itself.
+std::string level_key(const camera::TriangleMesh& mesh) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  auto mix = [&h](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  mix(mesh.vertices.data(), mesh.vertices.size() * sizeof(Eigen::Vector3f));
+  mix(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
+  char key[24];
+  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
+  return key;
+}
+
+std::string level_json(const camera::TriangleMesh& mesh) {
+  std::vector<float> positions;
+  positions.reserve(mesh.vertices.size() * 3);
+  for (const Eigen::Vector3f& v : mesh.vertices) {
+    positions.push_back(v.x());
+    positions.push_back(v.y());
+    positions.push_back(v.z());
+  }
+  std::string indices;
+  const bool small = mesh.vertices.size() <= 65536;
+  if (small) {
+    std::vector<std::uint16_t> idx;
+    idx.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles) {
+      for (std::uint32_t i : t) idx.push_back(static_cast<std::uint16_t>(i));
+    }
+    indices = base64_of(idx);
+  } else {
+    std::vector<std::uint32_t> idx;
+    idx.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
+    indices = base64_of(idx);
+  }
+  return "{\"positions\":\"" + base64_of(positions) + "\",\"indices\":\"" + indices +
+         "\",\"index_type\":\"" + (small ? "u16" : "u32") + "\",\"triangles\":" +
+         std::to_string(mesh.triangles.size()) + "}";
+}
+
 // The scene's data as one JSON object (see replay.js, "Data").
 std::string scene_json(const ReplayScene& rs) {
   const camera::Scene& scene = *rs.scene;
@@ -248,32 +292,8 @@ std::string scene_json(const ReplayScene& rs) {
   out << ",\"areas\":\"" << base64_of(areas) << "\",\"area_kinds\":\"" << kinds << "\"";
 
   if (const camera::Level* level = scene.level(); level && !level->mesh.empty()) {
-    const camera::TriangleMesh& mesh = level->mesh;
-    std::vector<float> positions;
-    positions.reserve(mesh.vertices.size() * 3);
-    for (const Eigen::Vector3f& v : mesh.vertices) {
-      positions.push_back(v.x());
-      positions.push_back(v.y());
-      positions.push_back(v.z());
-    }
-    std::string indices;
-    const bool small = mesh.vertices.size() <= 65536;
-    if (small) {
-      std::vector<std::uint16_t> idx;
-      idx.reserve(mesh.triangles.size() * 3);
-      for (const auto& t : mesh.triangles) {
-        for (std::uint32_t i : t) idx.push_back(static_cast<std::uint16_t>(i));
-      }
-      indices = base64_of(idx);
-    } else {
-      std::vector<std::uint32_t> idx;
-      idx.reserve(mesh.triangles.size() * 3);
-      for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
-      indices = base64_of(idx);
-    }
-    out << ",\"level\":{\"positions\":\"" << base64_of(positions) << "\",\"indices\":\"" << indices
-        << "\",\"index_type\":\"" << (small ? "u16" : "u32") << "\",\"triangles\":"
-        << mesh.triangles.size() << "}";
+    out << ",\"level\":{\"key\":\"" << level_key(level->mesh) << "\",\"triangles\":"
+        << level->mesh.triangles.size() << "}";
   } else {
     out << ",\"level\":null";
   }
@@ -351,19 +371,37 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
     }
   }
   const std::string json = scene_json(scene);
+  std::string level_block;  // the level's triangles, when this page does not have them yet
+  if (const camera::Level* level = scene.scene->level(); level && !level->mesh.empty()) {
+    const std::string key = level_key(level->mesh);
+    if (!options.levels_on_page || options.levels_on_page->insert(key).second) {
+      if (options.assets_dir.empty()) {
+        level_block = "<script type='application/json' class='replay-level' data-level='" + key +
+                      "'>" + level_json(level->mesh) + "</script>";
+      } else {
+        write_file(std::filesystem::path(options.assets_dir) / ("replay-level-" + key + ".js"),
+                   "(window.sightlineReplayLevels=window.sightlineReplayLevels||{})[\"" + key +
+                       "\"]=" + level_json(level->mesh) + ";\n");
+        level_block = "<script type='application/json' class='replay-level' data-level='" + key +
+                      "' data-src='" + escape(options.assets_href + "/replay-level-" + key + ".js") +
+                      "'>null</script>";
+      }
+    }
+  }
   std::ostringstream out;
   std::string run_ids;
   for (const ReplayRun& run : scene.runs) run_ids += (run_ids.empty() ? "" : " ") + run.id;
   out << "<section class='replay' data-scene='" << escape(scene.id) << "' data-runs='"
       << escape(run_ids) << "'";
   if (options.assets_dir.empty()) {
-    out << "><script type='application/json' class='replay-data'>" << json << "</script>";
+    out << ">" << level_block << "<script type='application/json' class='replay-data'>" << json
+        << "</script>";
   } else {
     const std::string file = "replay-" + replay_safe_id(scene.id) + ".js";
     write_file(std::filesystem::path(options.assets_dir) / file,
                "(window.sightlineReplayData=window.sightlineReplayData||{})[" +
                    json_string(scene.id) + "]=" + json + ";\n");
-    out << " data-src='" << escape(options.assets_href + "/" + file) << "'>";
+    out << " data-src='" << escape(options.assets_href + "/" + file) << "'>" << level_block;
   }
   out << "<div class='replay-placeholder'>3D replay of " << escape(scene.scene->name()) << " ("
       << scene.runs.size() << " run" << (scene.runs.size() == 1 ? "" : "s")
@@ -372,7 +410,9 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
 }
 
 std::string replay_page(const std::string& title, const std::vector<ReplayScene>& scenes,
-                        const ReplayOptions& options) {
+                        const ReplayOptions& page_options) {
+  ReplayOptions options = page_options;  // a page of its own: no level written yet
+  options.levels_on_page = std::make_shared<std::set<std::string>>();
   std::string out = "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>" +
                     escape(title) + "</title>";
   out += "<style>body{font-family:system-ui,sans-serif;margin:24px;color:#222}</style>";

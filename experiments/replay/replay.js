@@ -4,7 +4,8 @@
  * DOM contract (scripts that check the page in a browser rely on it; docs/EXPERIMENTS.md):
  *  - Each scene: <section class="replay" data-scene="SCENE_ID" data-runs="RUN_ID RUN_ID ...">
  *    holding its data (<script type="application/json" class="replay-data">, or data-src =
- *    a .js file beside the page that sets window.sightlineReplayData[SCENE_ID]).
+ *    a .js file beside the page that sets window.sightlineReplayData[SCENE_ID]), and the
+ *    first section on a level also holds the level (script.replay-level, see Data).
  *  - Built lazily (scrolled into view, clicked, or asked for by the fragment), it holds:
  *    canvas.replay-world (orbit view), canvas.replay-camera[data-slot=a] (main camera of the
  *    selected run) and canvas.replay-camera[data-slot=b] (second run, side-by-side mode),
@@ -28,8 +29,10 @@
  *
  * Data (one JSON object per scene, numbers in base64 little-endian typed arrays):
  *  bounds [[min],[max]], fov, character {size, look_at_height}, boxes (Float32, 6 per box:
- *  min xyz, max xyz), areas (same) + area_kinds ("e"/"s" per area), level null or
- *  {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, movers [{name,
+ *  min xyz, max xyz), areas (same) + area_kinds ("e"/"s" per area), level null or {key,
+ *  triangles}: the triangles are once per page in script.replay-level[data-level=KEY]
+ *  (JSON {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, or data-src
+ *  naming a .js beside the page that sets window.sightlineReplayLevels[KEY]), movers [{name,
  *  size, keys [[t,x,y,z]...]}] (base centre, linear between keys, held outside), runs [{id,
  *  label, frames, track (Float32 t,x,y,z,yaw per frame) or track_of (index of the run whose
  *  track is the same), camera_q, target_q (Uint16 xyz per frame on the scene's grid {origin,
@@ -154,23 +157,46 @@
     this.time = 0; this.speed = 1; this.playing = false;
     this.onBuilt = [];
   }
+  function loadScript(src, onload, onerror) {
+    var tag = document.createElement('script');
+    tag.src = src;
+    tag.onload = onload;
+    tag.onerror = onerror;
+    document.head.appendChild(tag);
+  }
   Replay.prototype.load = function (done) {
     var self = this, s = this.section;
     if (this.data) return done();
+    var withLevel = function (raw) {
+      self.loadLevel(raw.level, function (level) {
+        raw.levelData = level;
+        self.data = self.decode(raw);
+        done();
+      });
+    };
     var inline = s.querySelector('script.replay-data');
-    if (inline) { this.data = this.decode(JSON.parse(inline.textContent)); return done(); }
+    if (inline) return withLevel(JSON.parse(inline.textContent));
     var store = window.sightlineReplayData || {};
-    if (store[this.id]) { this.data = this.decode(store[this.id]); return done(); }
-    var tag = document.createElement('script');
-    tag.src = s.dataset.src;
-    tag.onload = function () {
+    if (store[this.id]) return withLevel(store[this.id]);
+    loadScript(s.dataset.src, function () {
       var d = (window.sightlineReplayData || {})[self.id];
       if (!d) return self.showError('the data file ' + s.dataset.src + ' holds no scene ' + self.id);
-      self.data = self.decode(d);
-      done();
-    };
-    tag.onerror = function () { self.showError('cannot load ' + s.dataset.src + ' (kept beside the report?)'); };
-    document.head.appendChild(tag);
+      withLevel(d);
+    }, function () { self.showError('cannot load ' + s.dataset.src + ' (kept beside the report?)'); });
+  };
+  // A level's triangles are on the page once (script.replay-level[data-level=KEY], inline or
+  // naming a file beside the page), whichever scene wrote them.
+  Replay.prototype.loadLevel = function (ref, done) {
+    var self = this, store = window.sightlineReplayLevels = window.sightlineReplayLevels || {};
+    if (!ref) return done(null);
+    if (store[ref.key]) return done(store[ref.key]);
+    var tag = document.querySelector('script.replay-level[data-level="' + ref.key + '"]');
+    if (!tag) return this.showError('the level ' + ref.key + ' is not on this page');
+    if (!tag.dataset.src) { store[ref.key] = JSON.parse(tag.textContent); return done(store[ref.key]); }
+    loadScript(tag.dataset.src, function () {
+      if (!store[ref.key]) return self.showError(tag.dataset.src + ' holds no level ' + ref.key);
+      done(store[ref.key]);
+    }, function () { self.showError('cannot load ' + tag.dataset.src + ' (kept beside the report?)'); });
   };
   Replay.prototype.decode = function (d) {
     d.boxArray = f32(d.boxes);
@@ -289,10 +315,10 @@
     if (d.boxArray.length) {
       scene.add(new THREE.Mesh(boxesGeometry(d.boxArray), new THREE.MeshLambertMaterial({ color: 0xa39a8c })));
     }
-    if (d.level) {
-      var g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.BufferAttribute(f32(d.level.positions), 3));
-      g.setIndex(new THREE.BufferAttribute(d.level.index_type === 'u16' ? u16(d.level.indices) : u32(d.level.indices), 1));
+    if (d.levelData) {
+      var lv = d.levelData, g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(f32(lv.positions), 3));
+      g.setIndex(new THREE.BufferAttribute(lv.index_type === 'u16' ? u16(lv.indices) : u32(lv.indices), 1));
       var flat = g.toNonIndexed();  // flat shading: one normal per triangle
       g.dispose();
       flat.computeVertexNormals();

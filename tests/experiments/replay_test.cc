@@ -148,13 +148,21 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
   EXPECT_EQ(d["fov"], 60);
 
   const auto& mesh = scene->level()->mesh;
-  const std::vector<float> positions = decode<float>(d["level"]["positions"]);
+  const std::string section = replay_section(rs, {});
+  ASSERT_EQ(d["level"]["triangles"], 2);
+  const std::string open = "<script type='application/json' class='replay-level' data-level='" +
+                           d["level"]["key"].get<std::string>() + "'>";
+  const std::size_t at = section.find(open);
+  ASSERT_NE(at, std::string::npos);
+  const nlohmann::json level = nlohmann::json::parse(
+      section.substr(at + open.size(), section.find("</script>", at) - at - open.size()));
+  const std::vector<float> positions = decode<float>(level["positions"]);
   ASSERT_EQ(positions.size(), mesh.vertices.size() * 3);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(positions[v * 3 + k], mesh.vertices[v][k]);
   }
-  ASSERT_EQ(d["level"]["index_type"], "u16");
-  const std::vector<std::uint16_t> indices = decode<std::uint16_t>(d["level"]["indices"]);
+  ASSERT_EQ(level["index_type"], "u16");
+  const std::vector<std::uint16_t> indices = decode<std::uint16_t>(level["indices"]);
   ASSERT_EQ(indices.size(), 6u);
   for (std::size_t t = 0; t < 2; ++t) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(indices[t * 3 + k], mesh.triangles[t][k]);
@@ -211,6 +219,23 @@ TEST(Replay, ACharacterTrackSharedByRunsIsWrittenOnce) {
   EXPECT_EQ(d["runs"][1]["track_of"], 0);
   EXPECT_EQ(d["runs"][2]["track_of"], 0);
   EXPECT_EQ(count(section, "\"track\":"), 1u);
+}
+
+TEST(Replay, ALevelSharedByScenesIsWrittenOncePerPage) {
+  auto a = make_scene(true);
+  auto b = std::make_shared<camera::Scene>(*a);  // another scene on the same level
+  ReplayOptions options;
+  std::string sections = replay_section({"a", a.get(), {make_run("a1", 5, 0)}}, options) +
+                         replay_section({"b", b.get(), {make_run("b1", 5, 0)}}, options);
+  EXPECT_EQ(count(sections, "class='replay-level'"), 1u);
+  EXPECT_EQ(inline_data(sections)["level"]["key"],
+            inline_data(sections.substr(sections.find("data-scene='b'")))["level"]["key"]);
+  // A page of its own writes it again; so does a caller with no record of the page.
+  const std::string page = replay_page("p", {{"a", a.get(), {make_run("a1", 5, 0)}},
+                                             {"b", b.get(), {make_run("b1", 5, 0)}}}, options);
+  EXPECT_EQ(count(page, "class='replay-level'"), 1u);
+  options.levels_on_page = nullptr;
+  EXPECT_EQ(count(replay_section({"a", a.get(), {make_run("a1", 5, 0)}}, options), "class='replay-level'"), 1u);
 }
 
 TEST(Replay, HeadInlinesThreeJsWithItsOrbitControlsAndTheReplayCode) {
@@ -297,6 +322,13 @@ TEST(Replay, AssetsBesideWritesThreeJsAndSceneDataAsScriptsThePageReferences) {
   const nlohmann::json d = nlohmann::json::parse(json);
   EXPECT_EQ(d["runs"][0]["id"], "r1");
   EXPECT_EQ(decode<std::uint16_t>(d["runs"][0]["camera_q"]).size(), 150u);
+  const std::string key = d["level"]["key"];
+  EXPECT_NE(page.find("data-level='" + key + "' data-src='report-assets/replay-level-" + key + ".js'"),
+            std::string::npos);
+  std::ifstream level(dir / ("report-assets/replay-level-" + key + ".js"));
+  std::stringstream level_text;
+  level_text << level.rdbuf();
+  EXPECT_EQ(level_text.str().rfind("(window.sightlineReplayLevels=window.sightlineReplayLevels||{})[\"" + key + "\"]={\"positions\":", 0), 0u);
   std::filesystem::remove_all(dir);
 }
 
