@@ -265,6 +265,10 @@
     var l3 = el('label', '', bar);
     ui.follow = el('input', 'replay-follow', l3); ui.follow.type = 'checkbox';
     l3.appendChild(document.createTextNode(' orbit follows the character'));
+    var l4 = el('label', '', bar);
+    ui.cutaway = el('input', 'replay-cutaway', l4); ui.cutaway.type = 'checkbox';
+    ui.cutaway.checked = !!d.level;  // a level's ceilings hide the character from the orbit view
+    l4.appendChild(document.createTextNode(' cut away above the camera'));
     d.runs.forEach(function (r, i) {
       el('option', '', ui.run, r.label).value = i;
       el('option', '', ui.runB, r.label).value = i;
@@ -288,7 +292,8 @@
     el('div', 'replay-legend', ui, 'Magenta: the character; yellow: the look-at point with the ' +
        'sight line (green visible, red hidden by the independent check); orange / blue: the ' +
        'camera and its path; red dots: frames with the look-at point hidden; dark dots: cuts. ' +
-       'Drag to orbit, right-drag to pan, wheel to zoom. Keys: space play, arrows step.');
+       'Drag to orbit, right-drag to pan, wheel to zoom, double-click to come back to the ' +
+       'character. Keys: space play, arrows step.');
 
     var tl = el('div', 'replay-timeline', ui);
     ui.back = el('button', 'replay-back', tl, '\u25c0 frame');
@@ -359,6 +364,7 @@
     this.worldCamera.layers.enable(LAYER_HELPERS);
     this.worldCamera.position.copy(centre).add(new THREE.Vector3(0.45, 0.6, 0.75).multiplyScalar(diag * 0.8));
     this.renderers = {};
+    this.cutPlane = new THREE.Plane(new THREE.Vector3(0, -1, 0), 0);  // keeps y <= constant
     this.renderers.world = new THREE.WebGLRenderer({ canvas: ui.world, antialias: true, preserveDrawingBuffer: true });
     this.controls = new THREE.OrbitControls(this.worldCamera, ui.world);
     this.controls.target.copy(centre);
@@ -376,6 +382,7 @@
     ui.runB.onchange = function () { if (ui.sbs.checked) self.selectRuns(self.runA, +ui.runB.value); };
     ui.sbs.onchange = function () { self.selectRuns(self.runA, ui.sbs.checked ? +ui.runB.value : -1); };
     ui.follow.onchange = function () { self.draw(); };
+    ui.cutaway.onchange = function () { self.draw(); };
     ui.play.onclick = function () { self.setPlaying(!self.playing); };
     ui.back.onclick = function () { self.step(-1); };
     ui.forward.onclick = function () { self.step(1); };
@@ -389,6 +396,16 @@
       if (e.key === 'ArrowRight') { self.step(1); e.preventDefault(); }
     });
     this.selectRuns(this.runA, this.runB, true);
+    // A level is big: start close to the character (double-click the view to come back).
+    if (d.level) this.frameCharacter();
+    ui.world.addEventListener('dblclick', function () { self.frameCharacter(); });
+  };
+  Replay.prototype.frameCharacter = function () {
+    var p = this.character.position.clone().add(new THREE.Vector3(0, this.data.character.size[1] / 2, 0));
+    this.controls.target.copy(p);
+    this.worldCamera.position.copy(p).add(new THREE.Vector3(0.45, 0.6, 0.75).multiplyScalar(12));
+    this.controls.update();
+    this.draw();
   };
 
   // The helpers of one run in one slot: camera path, hidden and cut markers, frustum,
@@ -541,6 +558,10 @@
       this.controls.target.add(moved);
       this.controls.update();
     }
+    // The orbit view only: everything above the camera and the character's head is cut away.
+    var top = Math.max(this.character.position.y + this.data.character.size[1], this.panelCameras.a.position.y) + 0.3;
+    this.cutPlane.constant = top;
+    this.renderers.world.clippingPlanes = ui.cutaway.checked ? [this.cutPlane] : [];
     this.renderers.world.render(this.scene, this.worldCamera);
     this.renderers.a.render(this.scene, this.panelCameras.a);
     if (state.b) {
