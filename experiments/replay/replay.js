@@ -484,15 +484,23 @@
     var run = this.data.runs[this.runA], end = run.frames ? run.trk[(run.frames - 1) * 5] : 0;
     if (this.time >= end) this.time = run.frames ? run.trk[0] : 0;
     var last = null;
-    function tick(now) {
+    function tick() {
       if (!self.playing || !self.built) return;
+      var now = performance.now();
       if (last !== null) self.time += (now - last) / 1000 * self.speed;
       last = now;
       if (self.time >= end) { self.time = end; self.setPlaying(false); }
       self.draw();
-      if (self.playing) requestAnimationFrame(tick);
+      if (self.playing) schedule();
     }
-    requestAnimationFrame(tick);
+    // requestAnimationFrame, with a timer in case frames do not come (a hidden tab, a
+    // headless browser): playback goes on, less smoothly.
+    function schedule() {
+      var fired = false, once = function () { if (!fired) { fired = true; tick(); } };
+      requestAnimationFrame(once);
+      setTimeout(once, 100);
+    }
+    schedule();
   };
   Replay.prototype.seekFrame = function (frame) {
     var run = this.data.runs[this.runA];
