@@ -680,7 +680,14 @@
       // also confuses headless Chromium's --screenshot).
       if (root.classList.contains('replay-solo')) window.scrollTo(0, 0);
       else r.section.scrollIntoView({ block: 'start' });
-      requestAnimationFrame(function () { requestAnimationFrame(function () { root.dataset.replay = 'ready'; }); });
+      // Drawn (preserveDrawingBuffer keeps it); ready after the next frame, or a moment,
+      // whichever comes first: headless browsers give few animation frames.
+      var marked = false, mark = function () {
+        if (!marked && root.dataset.replay !== 'error') root.dataset.replay = 'ready';
+        marked = true;
+      };
+      requestAnimationFrame(function () { requestAnimationFrame(mark); });
+      setTimeout(mark, 50);
     });
   }
 
