@@ -13,7 +13,8 @@
  *    selected run) and canvas.replay-camera[data-slot=b] (second run, side-by-side mode),
  *    select.replay-run, input.replay-sbs + select.replay-run-b, button.replay-play,
  *    button.replay-back, button.replay-forward, select.replay-speed, input.replay-scrub,
- *    canvas.replay-marks (cuts: dark ticks; hidden look-at frames: red), span.replay-time.
+ *    canvas.replay-marks (cuts: dark ticks; hidden look-at frames: red), span.replay-time,
+ *    a.replay-link (href: the fragment that reopens the current run and time).
  *  - After every drawn frame the section carries data-run, data-frame, data-t and
  *    data-hidden ("1" when the independent check hides the look-at point at that frame),
  *    and data-run-b / data-frame-b in side-by-side mode.

@@ -146,6 +146,7 @@
 
     var views = el('div', 'replay-views', ui);
     ui.world = el('canvas', 'replay-world', views);
+    ui.world.setAttribute('aria-label', '3D view of the scene, the character and the camera');
     var panels = el('div', 'replay-panels', views);
     ui.panel = {};
     ['a', 'b'].forEach(function (slot) {
@@ -153,6 +154,7 @@
       p.dataset.slot = slot;
       var label = el('div', 'replay-panel-label', p);
       var c = el('canvas', 'replay-camera', p);
+      c.setAttribute('aria-label', 'what the main camera sees');
       c.dataset.slot = slot;
       ui.panel[slot] = { box: p, label: label, canvas: c };
     });
@@ -173,6 +175,8 @@
     ui.scrub = el('input', 'replay-scrub', sb); ui.scrub.type = 'range'; ui.scrub.min = 0; ui.scrub.step = 1;
     ui.marks = el('canvas', 'replay-marks', sb);
     ui.time = el('span', 'replay-time', tl);
+    ui.link = el('a', 'replay-link', tl, 'link to this moment');
+    ui.link.title = 'a link that opens this run paused at this time';
 
     // three.js: one scene graph; the main-camera panels see layer 0 only.
     var scene = this.scene = new THREE.Scene();
@@ -439,6 +443,8 @@
     }
     ui.scrub.value = a.frame;
     var run = a.run;
+    ui.link.href = '#run=' + encodeURIComponent(run.id) + '&t=' + run.trk[a.frame * 5].toFixed(3) +
+        (state.b ? '&run2=' + encodeURIComponent(state.b.run.id) : '');
     ui.time.textContent = 't = ' + run.trk[a.frame * 5].toFixed(2) + ' s, frame ' + a.frame + ' / ' +
         (run.frames - 1) + ((run.flag[a.frame] & 1) ? ', cut' : '') + (a.hidden ? ', look-at hidden' : '');
     s.dataset.run = run.id;
