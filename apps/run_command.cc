@@ -26,6 +26,7 @@ struct RunOptions {
   std::string out;
   unsigned jobs = 0;
   std::size_t max_runs = 0;
+  std::string report_assets;  // --report-assets inline|beside; empty: as the suite file says
   bool no_report = false;
   std::vector<std::string> compare;  // "A,B" pairs for the Wilcoxon test
 };
@@ -50,7 +51,10 @@ void run_suite_command(const RunOptions& o) {
     outcome = experiments::run_suite(suite, runner);
   }
   std::cout << experiments::markdown_summary(suite, outcome);
-  if (!o.no_report) experiments::write_report(suite, outcome, o.out);
+  experiments::ReportOptions report;
+  if (o.report_assets == "inline") report.replay_assets = experiments::ReportOptions::ReplayAssets::kInline;
+  if (o.report_assets == "beside") report.replay_assets = experiments::ReportOptions::ReplayAssets::kBeside;
+  if (!o.no_report) experiments::write_report(suite, outcome, o.out, report);
   std::cout << "Results: " << o.out << "/results.csv" << (o.no_report ? "" : ", report: " + o.out + "/report.html")
             << "\n";
   if (outcome.failed > 0) {
@@ -80,6 +84,10 @@ void add_run_command(CLI::App& app) {
                   "(repeatable)")
       ->allow_extra_args(false);
   cmd->add_flag("--no-report", options->no_report, "skip report.html");
+  cmd->add_option("--report-assets", options->report_assets,
+                  "the 3D replay's three.js and scene data: inline (one file) or beside "
+                  "(DIR/report-assets/); default: the suite's report: replay_assets")
+      ->check(CLI::IsMember({"inline", "beside"}));
   cmd->callback([options] { run_suite_command(*options); });
 }
 
