@@ -28,6 +28,8 @@ struct TraceRow {
   double desired_height = 0;        // metres above the feet
   double desired_distance = 0;      // metres, horizontal
   double desired_orientation = 0;   // degrees
+  // The 1-based line this row was read from (read_trace_csv), for messages; 0 otherwise.
+  int line = 0;
 };
 
 // The header line, without a trailing newline.
@@ -35,8 +37,14 @@ std::string trace_header();
 // Writes the trace to `path` atomically enough for resumable suites: to path + ".tmp", then
 // renamed. Throws std::runtime_error naming the path on failure.
 void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows);
-// Reads a trace written by write_trace_csv (or any CSV with at least the fifteen public
-// columns, in order). Throws csp::InputError naming the file and line on malformed input.
+// Reads a trace written by write_trace_csv, or any CSV whose header starts with the fifteen
+// public columns in order (names may be quoted; blanks around cells and Windows line ends are
+// fine). Columns after those may hold anything; this project's extras (visible,
+// desired_height, ...) are read by name wherever they are. Throws csp::InputError naming the
+// file, line and column on malformed input: a missing or misnamed public column (which one),
+// a row with fewer or more cells than the header, a cell of a read column that is not a
+// finite number, a frame number that is not whole.
+// Blank lines are skipped.
 std::vector<TraceRow> read_trace_csv(const std::string& path);
 
 }  // namespace sightline::experiments
