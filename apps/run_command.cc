@@ -1,4 +1,5 @@
-// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--no-report]`: runs an
+// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--no-report]
+// [--report-assets inline|beside]`: runs an
 // experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes DIR/results.csv,
 // DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints the Markdown
 // summary. Exits 1 when a run failed, 2 for a bad suite file.
@@ -21,6 +22,7 @@ struct RunOptions {
   unsigned jobs = 0;
   std::size_t max_runs = 0;
   bool no_report = false;
+  std::string report_assets;  // empty: as the suite file says
 };
 
 void run_suite_command(const RunOptions& o) {
@@ -31,7 +33,10 @@ void run_suite_command(const RunOptions& o) {
   runner.max_new_runs = o.max_runs;
   const experiments::SuiteOutcome outcome = experiments::run_suite(suite, runner);
   std::cout << experiments::markdown_summary(suite, outcome);
-  if (!o.no_report) experiments::write_report(suite, outcome, o.out);
+  experiments::ReportOptions report;
+  if (o.report_assets == "inline") report.replay_assets = experiments::ReportOptions::ReplayAssets::kInline;
+  if (o.report_assets == "beside") report.replay_assets = experiments::ReportOptions::ReplayAssets::kBeside;
+  if (!o.no_report) experiments::write_report(suite, outcome, o.out, report);
   std::cout << "Results: " << o.out << "/results.csv" << (o.no_report ? "" : ", report: " + o.out + "/report.html")
             << "\n";
   if (outcome.failed > 0) {
@@ -57,6 +62,10 @@ void add_run_command(CLI::App& app) {
                   "stop after this many new runs (the rest resume next time)")
       ->check(unsigned_integer());
   cmd->add_flag("--no-report", options->no_report, "skip report.html");
+  cmd->add_option("--report-assets", options->report_assets,
+                  "the 3D replay's three.js and scene data: inline (one file) or beside "
+                  "(DIR/report-assets/); default: the suite's report: replay_assets")
+      ->check(CLI::IsMember({"inline", "beside"}));
   cmd->callback([options] { run_suite_command(*options); });
 }
 

@@ -372,7 +372,12 @@ Suite parse_suite(const csp::Spec& document, const std::string& base_dir) {
   if (const Spec* c = document.find("camera")) read_camera(*c, base_dir, suite);
   if (const Spec* p = document.find("problems")) read_problems(*p, base_dir, suite);
   if (const Spec* r = document.find("report")) {
-    r->check_keys({"camera_view_frames"});
+    r->check_keys({"camera_view_frames", "replay_assets"});
+    if (const Spec* a = r->find("replay_assets")) {
+      const std::string v = a->as_string("inline or beside");
+      if (v != "inline" && v != "beside") a->fail("expected inline or beside, got " + a->preview());
+      suite.replay_assets_beside = v == "beside";
+    }
     if (const Spec* f = r->find("camera_view_frames")) {
       const long long n = f->as_integer("a number of frames in 0..8");
       if (n < 0 || n > 8) f->fail("expected a number of frames in 0..8, got " + f->preview());

@@ -1,0 +1,651 @@
+/* sightline 3D replay (experiments/replay.h). Needs three.js r111 (global THREE) and its
+ * OrbitControls (THREE.OrbitControls), both from Debian's libjs-three, loaded before this.
+ *
+ * DOM contract (scripts that check the page in a browser rely on it; docs/EXPERIMENTS.md):
+ *  - Each scene: <section class="replay" data-scene="SCENE_ID" data-runs="RUN_ID RUN_ID ...">
+ *    holding its data (<script type="application/json" class="replay-data">, or data-src =
+ *    a .js file beside the page that sets window.sightlineReplayData[SCENE_ID]).
+ *  - Built lazily (scrolled into view, clicked, or asked for by the fragment), it holds:
+ *    canvas.replay-world (orbit view), canvas.replay-camera[data-slot=a] (main camera of the
+ *    selected run) and canvas.replay-camera[data-slot=b] (second run, side-by-side mode),
+ *    select.replay-run, input.replay-sbs + select.replay-run-b, button.replay-play,
+ *    button.replay-back, button.replay-forward, select.replay-speed, input.replay-scrub,
+ *    canvas.replay-marks (cuts: dark ticks; hidden look-at frames: red), span.replay-time.
+ *  - After every drawn frame the section carries data-run, data-frame, data-t and
+ *    data-hidden ("1" when the independent check hides the look-at point at that frame),
+ *    and data-run-b / data-frame-b in side-by-side mode.
+ *  - The character is the only magenta (#ff00ff) object, drawn unlit (MeshBasicMaterial);
+ *    the main-camera canvases have no antialiasing, fog or tone mapping, so its pixels are
+ *    exactly #ff00ff. Vertical field of view: the scene data's fov (60 degrees, as the
+ *    report's ray-cast pictures).
+ *  - URL fragment: #run=RUN_ID&t=SECONDS (#t=SECONDS alone: the first run of the first
+ *    scene; &run2=RUN_ID adds a second run side by side) builds that scene, scrolls to it and
+ *    opens paused at that time. &panel=camera shows only that run's main-camera canvas,
+ *    filling the window; &panel=world likewise the orbit view.
+ *  - document.documentElement.dataset.replay: "ready" once the view the fragment asked for
+ *    has drawn its frame (at once without a fragment); "error" after a JavaScript error or a
+ *    fragment naming no run on the page (dataset.replayError says what).
+ *
+ * Data (one JSON object per scene, numbers in base64 little-endian typed arrays):
+ *  bounds [[min],[max]], fov, character {size, look_at_height}, boxes (Float32, 6 per box:
+ *  min xyz, max xyz), areas (same) + area_kinds ("e"/"s" per area), level null or
+ *  {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, movers [{name,
+ *  size, keys [[t,x,y,z]...]}] (base centre, linear between keys, held outside), runs [{id,
+ *  label, frames, track (Float32 t,x,y,z,yaw per frame) or track_of (index of the run whose
+ *  track is the same), camera, target (Float32 xyz per frame), flags (Uint8: 1 cut, 2 hidden)}].
+ */
+(function () {
+  'use strict';
+  var root = document.documentElement;
+  function fail(message) {
+    root.dataset.replay = 'error';
+    root.dataset.replayError = String(message);
+  }
+  window.addEventListener('error', function (e) { fail(e.message || 'error'); });
+  window.addEventListener('unhandledrejection', function (e) { fail(e.reason || 'rejection'); });
+
+  var MAGENTA = 0xff00ff;
+  var SLOT_COLOURS = { a: 0xe8590c, b: 0x1c7ed6 };
+  var MAX_BUILT = 4;  // WebGL contexts are limited (about 16 in Chromium): 3 per scene
+  var LAYER_HELPERS = 1;  // drawn in the orbit view only, never in the main-camera panels
+
+  function bytes(b64) {
+    var s = atob(b64), a = new Uint8Array(s.length);
+    for (var i = 0; i < s.length; ++i) a[i] = s.charCodeAt(i);
+    return a;
+  }
+  function f32(b64) { var a = bytes(b64); return new Float32Array(a.buffer, 0, a.length >> 2); }
+  function u16(b64) { var a = bytes(b64); return new Uint16Array(a.buffer, 0, a.length >> 1); }
+  function u32(b64) { var a = bytes(b64); return new Uint32Array(a.buffer, 0, a.length >> 2); }
+
+  function el(tag, cls, parent, text) {
+    var e = document.createElement(tag);
+    if (cls) e.className = cls;
+    if (text !== undefined) e.textContent = text;
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+  function helper(obj) { obj.traverse(function (o) { o.layers.set(LAYER_HELPERS); }); return obj; }
+
+  // Solid boxes as one mesh: 12 triangles each, flat normals.
+  function boxesGeometry(b) {
+    var n = b.length / 6, pos = new Float32Array(n * 108), nor = new Float32Array(n * 108), k = 0;
+    var faces = [  // axis, side, the four corners' (u, v) over the other two axes
+      [0, 0], [0, 1], [1, 0], [1, 1], [2, 0], [2, 1]];
+    for (var i = 0; i < n; ++i) {
+      var lo = [b[i * 6], b[i * 6 + 1], b[i * 6 + 2]], hi = [b[i * 6 + 3], b[i * 6 + 4], b[i * 6 + 5]];
+      for (var f = 0; f < 6; ++f) {
+        var ax = faces[f][0], side = faces[f][1], u = (ax + 1) % 3, v = (ax + 2) % 3;
+        var corners = [[0, 0], [1, 0], [1, 1], [0, 0], [1, 1], [0, 1]];
+        if (side === 0) corners = [[0, 0], [1, 1], [1, 0], [0, 0], [0, 1], [1, 1]];
+        for (var c = 0; c < 6; ++c) {
+          var p = [0, 0, 0];
+          p[ax] = side ? hi[ax] : lo[ax];
+          p[u] = corners[c][0] ? hi[u] : lo[u];
+          p[v] = corners[c][1] ? hi[v] : lo[v];
+          var q = [0, 0, 0];
+          q[ax] = side ? 1 : -1;
+          pos.set(p, k); nor.set(q, k); k += 3;
+        }
+      }
+    }
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+    g.setAttribute('normal', new THREE.BufferAttribute(nor, 3));
+    return g;
+  }
+  function wireBox(lo, hi, colour) {
+    var g = new THREE.BoxBufferGeometry(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    var e = new THREE.LineSegments(new THREE.EdgesGeometry(g), new THREE.LineBasicMaterial({ color: colour }));
+    e.position.set((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+    g.dispose();
+    return e;
+  }
+  function line(points, colour) {
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(points, 3));
+    return new THREE.Line(g, new THREE.LineBasicMaterial({ color: colour }));
+  }
+  function points(pts, colour, size) {
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(pts, 3));
+    return new THREE.Points(g, new THREE.PointsMaterial({ color: colour, size: size, sizeAttenuation: false }));
+  }
+  // The camera drawn as a small frustum: apex at the origin, opening along +z (Object3D.lookAt
+  // turns +z toward the target for objects that are not cameras).
+  function frustum(fov, colour) {
+    var h = Math.tan(fov * Math.PI / 360) * 0.8, w = h * 1.6, d = 0.8;
+    var c = [[-w, -h], [w, -h], [w, h], [-w, h]], v = [];
+    for (var i = 0; i < 4; ++i) {
+      var a = c[i], b = c[(i + 1) % 4];
+      v.push(0, 0, 0, a[0], a[1], d, a[0], a[1], d, b[0], b[1], d);
+    }
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(v), 3));
+    return new THREE.LineSegments(g, new THREE.LineBasicMaterial({ color: colour }));
+  }
+  function moverPosition(keys, t) {
+    if (t <= keys[0][0]) return keys[0];
+    for (var i = 1; i < keys.length; ++i) {
+      if (t <= keys[i][0]) {
+        var a = keys[i - 1], b = keys[i], s = (t - a[0]) / (b[0] - a[0]);
+        return [t, a[1] + s * (b[1] - a[1]), a[2] + s * (b[2] - a[2]), a[3] + s * (b[3] - a[3])];
+      }
+    }
+    return keys[keys.length - 1];
+  }
+
+  // ---- one scene's replay -------------------------------------------------------------
+  function Replay(section) {
+    this.section = section;
+    this.id = section.dataset.scene;
+    this.runIds = (section.dataset.runs || '').split(' ').filter(Boolean);
+    this.data = null;
+    this.built = false;
+    this.building = false;
+    this.runA = 0; this.runB = -1;
+    this.time = 0; this.speed = 1; this.playing = false;
+    this.onBuilt = [];
+  }
+  Replay.prototype.load = function (done) {
+    var self = this, s = this.section;
+    if (this.data) return done();
+    var inline = s.querySelector('script.replay-data');
+    if (inline) { this.data = this.decode(JSON.parse(inline.textContent)); return done(); }
+    var store = window.sightlineReplayData || {};
+    if (store[this.id]) { this.data = this.decode(store[this.id]); return done(); }
+    var tag = document.createElement('script');
+    tag.src = s.dataset.src;
+    tag.onload = function () {
+      var d = (window.sightlineReplayData || {})[self.id];
+      if (!d) return self.showError('the data file ' + s.dataset.src + ' holds no scene ' + self.id);
+      self.data = self.decode(d);
+      done();
+    };
+    tag.onerror = function () { self.showError('cannot load ' + s.dataset.src + ' (kept beside the report?)'); };
+    document.head.appendChild(tag);
+  };
+  Replay.prototype.decode = function (d) {
+    d.boxArray = f32(d.boxes);
+    d.areaArray = f32(d.areas);
+    d.runs.forEach(function (r) {
+      r.cam = f32(r.camera); r.tgt = f32(r.target); r.flag = bytes(r.flags);
+      if (r.track) r.trk = f32(r.track);
+    });
+    d.runs.forEach(function (r) { if (!r.trk) r.trk = d.runs[r.track_of].trk; });
+    return d;
+  };
+  Replay.prototype.showError = function (message) {
+    var p = this.section.querySelector('.replay-error') || el('p', 'replay-error', this.section);
+    p.textContent = 'Replay: ' + message;
+    fail(message);
+  };
+  // Largest frame whose time is <= t (within a little for Float32 times), clamped.
+  Replay.prototype.frameAt = function (run, t) {
+    var trk = run.trk, lo = 0, hi = run.frames - 1;
+    if (hi < 0) return 0;
+    while (lo < hi) {
+      var mid = (lo + hi + 1) >> 1;
+      if (trk[mid * 5] <= t + 1e-4) lo = mid; else hi = mid - 1;
+    }
+    return lo;
+  };
+  Replay.prototype.build = function (done) {
+    var self = this;
+    if (done) this.onBuilt.push(done);
+    if (this.built) return this.flushBuilt();
+    if (this.building) return;
+    this.building = true;
+    this.load(function () {
+      try {
+        self.buildNow();
+      } catch (e) {
+        self.building = false;
+        self.showError(e.message || e);
+        return;
+      }
+      self.building = false;
+      self.built = true;
+      Replay.noteBuilt(self);
+      self.flushBuilt();
+    });
+  };
+  Replay.prototype.flushBuilt = function () {
+    var list = this.onBuilt;
+    this.onBuilt = [];
+    this.draw();
+    list.forEach(function (f) { f(); });
+  };
+
+  Replay.prototype.buildNow = function () {
+    var self = this, d = this.data, s = this.section;
+    var ph = s.querySelector('.replay-placeholder');
+    if (ph) ph.hidden = true;
+    var ui = this.ui = el('div', 'replay-ui', s);
+    var bar = el('div', 'replay-bar', ui);
+    var l1 = el('label', '', bar, 'run ');
+    ui.run = el('select', 'replay-run', l1);
+    var l2 = el('label', '', bar);
+    ui.sbs = el('input', 'replay-sbs', l2); ui.sbs.type = 'checkbox';
+    l2.appendChild(document.createTextNode(' side by side with '));
+    ui.runB = el('select', 'replay-run-b', l2);
+    var l3 = el('label', '', bar);
+    ui.follow = el('input', 'replay-follow', l3); ui.follow.type = 'checkbox';
+    l3.appendChild(document.createTextNode(' orbit follows the character'));
+    d.runs.forEach(function (r, i) {
+      el('option', '', ui.run, r.label).value = i;
+      el('option', '', ui.runB, r.label).value = i;
+    });
+    ui.run.value = this.runA;
+    ui.runB.value = this.runB >= 0 ? this.runB : Math.min(1, d.runs.length - 1);
+    ui.sbs.checked = this.runB >= 0;
+
+    var views = el('div', 'replay-views', ui);
+    ui.world = el('canvas', 'replay-world', views);
+    var panels = el('div', 'replay-panels', views);
+    ui.panel = {};
+    ['a', 'b'].forEach(function (slot) {
+      var p = el('div', 'replay-panel', panels);
+      p.dataset.slot = slot;
+      var label = el('div', 'replay-panel-label', p);
+      var c = el('canvas', 'replay-camera', p);
+      c.dataset.slot = slot;
+      ui.panel[slot] = { box: p, label: label, canvas: c };
+    });
+    el('div', 'replay-legend', ui, 'Magenta: the character; yellow: the look-at point with the ' +
+       'sight line (green visible, red hidden by the independent check); orange / blue: the ' +
+       'camera and its path; red dots: frames with the look-at point hidden; dark dots: cuts. ' +
+       'Drag to orbit, right-drag to pan, wheel to zoom. Keys: space play, arrows step.');
+
+    var tl = el('div', 'replay-timeline', ui);
+    ui.back = el('button', 'replay-back', tl, '\u25c0 frame');
+    ui.play = el('button', 'replay-play', tl, '\u25b6 play');
+    ui.forward = el('button', 'replay-forward', tl, 'frame \u25b6');
+    ui.speed = el('select', 'replay-speed', tl);
+    [0.25, 0.5, 1, 2, 4].forEach(function (v) { el('option', '', ui.speed, v + 'x').value = v; });
+    ui.speed.value = String(this.speed);
+    var sb = el('div', 'replay-scrub-box', tl);
+    ui.scrub = el('input', 'replay-scrub', sb); ui.scrub.type = 'range'; ui.scrub.min = 0; ui.scrub.step = 1;
+    ui.marks = el('canvas', 'replay-marks', sb);
+    ui.time = el('span', 'replay-time', tl);
+
+    // three.js: one scene graph; the main-camera panels see layer 0 only.
+    var scene = this.scene = new THREE.Scene();
+    scene.background = new THREE.Color(0xd0d7de);
+    scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8a8a, 0.75));
+    var sun = new THREE.DirectionalLight(0xffffff, 0.45);
+    sun.position.set(0.4, 1, 0.25);
+    scene.add(sun);
+    var lo = d.bounds[0], hi = d.bounds[1];
+    var centre = new THREE.Vector3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+    var diag = Math.max(1, Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]));
+    if (d.boxArray.length) {
+      scene.add(new THREE.Mesh(boxesGeometry(d.boxArray), new THREE.MeshLambertMaterial({ color: 0xa39a8c })));
+    }
+    if (d.level) {
+      var g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(f32(d.level.positions), 3));
+      g.setIndex(new THREE.BufferAttribute(d.level.index_type === 'u16' ? u16(d.level.indices) : u32(d.level.indices), 1));
+      var flat = g.toNonIndexed();  // flat shading: one normal per triangle
+      g.dispose();
+      flat.computeVertexNormals();
+      scene.add(new THREE.Mesh(flat, new THREE.MeshLambertMaterial({ color: 0x9c9890, side: THREE.DoubleSide })));
+    } else {
+      // Box scenes stand on the ground y = 0, as in the report's ray-cast pictures.
+      var size = Math.ceil(diag * 1.5);
+      var ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(size, size),
+                                  new THREE.MeshLambertMaterial({ color: 0xc9c4b5, polygonOffset: true,
+                                                                  polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+      ground.rotation.x = -Math.PI / 2;  // pushed back in depth so the grid lines on it win
+      ground.position.set(centre.x, 0, centre.z);
+      scene.add(ground);
+      var grid = new THREE.GridHelper(size, Math.min(400, size), 0x8d877b, 0xaaa494);
+      grid.position.set(centre.x, 0, centre.z);
+      scene.add(grid);
+    }
+    for (var i = 0; i < d.area_kinds.length; ++i) {
+      var a = d.areaArray;
+      scene.add(helper(wireBox([a[i * 6], a[i * 6 + 1], a[i * 6 + 2]], [a[i * 6 + 3], a[i * 6 + 4], a[i * 6 + 5]],
+                               d.area_kinds[i] === 'e' ? 0x2f9e44 : 0x0c8599)));
+    }
+    this.movers = d.movers.map(function (m) {
+      var mesh = new THREE.Mesh(new THREE.BoxBufferGeometry(m.size[0], m.size[1], m.size[2]).translate(0, m.size[1] / 2, 0),
+                                new THREE.MeshLambertMaterial({ color: 0x4c6e96 }));
+      scene.add(mesh);
+      return { keys: m.keys, mesh: mesh };
+    });
+    var cs = d.character.size;
+    this.character = new THREE.Mesh(new THREE.BoxBufferGeometry(cs[0], cs[1], cs[2]).translate(0, cs[1] / 2, 0),
+                                     new THREE.MeshBasicMaterial({ color: MAGENTA }));
+    scene.add(this.character);
+    this.facing = helper(new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), Math.max(0.8, cs[1] * 0.6), 0x1864ab));
+    scene.add(this.facing);
+    this.slots = {};
+
+    this.worldCamera = new THREE.PerspectiveCamera(50, 1.6, diag / 2000, diag * 20);
+    this.worldCamera.layers.enable(LAYER_HELPERS);
+    this.worldCamera.position.copy(centre).add(new THREE.Vector3(0.45, 0.6, 0.75).multiplyScalar(diag * 0.8));
+    this.renderers = {};
+    this.renderers.world = new THREE.WebGLRenderer({ canvas: ui.world, antialias: true, preserveDrawingBuffer: true });
+    this.controls = new THREE.OrbitControls(this.worldCamera, ui.world);
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.controls.addEventListener('change', function () { self.drawWorld(); });
+    this.panelCameras = {};
+    ['a', 'b'].forEach(function (slot) {
+      self.panelCameras[slot] = new THREE.PerspectiveCamera(d.fov, 1.6, 0.05, diag * 20);
+      self.renderers[slot] = new THREE.WebGLRenderer({ canvas: ui.panel[slot].canvas, antialias: false, preserveDrawingBuffer: true });
+      self.renderers[slot].setPixelRatio(1);  // exact pixels for checks
+    });
+    this.resize();
+
+    ui.run.onchange = function () { self.selectRuns(+ui.run.value, self.runB); };
+    ui.runB.onchange = function () { if (ui.sbs.checked) self.selectRuns(self.runA, +ui.runB.value); };
+    ui.sbs.onchange = function () { self.selectRuns(self.runA, ui.sbs.checked ? +ui.runB.value : -1); };
+    ui.follow.onchange = function () { self.draw(); };
+    ui.play.onclick = function () { self.setPlaying(!self.playing); };
+    ui.back.onclick = function () { self.step(-1); };
+    ui.forward.onclick = function () { self.step(1); };
+    ui.speed.onchange = function () { self.speed = +ui.speed.value; };
+    ui.scrub.oninput = function () { self.setPlaying(false); self.seekFrame(+ui.scrub.value); };
+    s.tabIndex = 0;
+    s.addEventListener('keydown', function (e) {
+      if (e.target.tagName === 'SELECT' || e.target.tagName === 'INPUT') return;
+      if (e.key === ' ') { self.setPlaying(!self.playing); e.preventDefault(); }
+      if (e.key === 'ArrowLeft') { self.step(-1); e.preventDefault(); }
+      if (e.key === 'ArrowRight') { self.step(1); e.preventDefault(); }
+    });
+    this.selectRuns(this.runA, this.runB, true);
+  };
+
+  // The helpers of one run in one slot: camera path, hidden and cut markers, frustum,
+  // look-at point and sight line, character path.
+  Replay.prototype.makeSlot = function (slot, index) {
+    var old = this.slots[slot];
+    if (old) { this.scene.remove(old.group); disposeTree(old.group); }
+    if (index < 0) { delete this.slots[slot]; return; }
+    var run = this.data.runs[index], n = run.frames, colour = SLOT_COLOURS[slot];
+    var group = new THREE.Group();
+    group.add(line(run.cam, colour));
+    var trackPts = new Float32Array(n * 3), hid = [], cut = [];
+    for (var i = 0; i < n; ++i) {
+      trackPts[i * 3] = run.trk[i * 5 + 1]; trackPts[i * 3 + 1] = run.trk[i * 5 + 2] + 0.02; trackPts[i * 3 + 2] = run.trk[i * 5 + 3];
+      var c = [run.cam[i * 3], run.cam[i * 3 + 1], run.cam[i * 3 + 2]];
+      if (run.flag[i] & 2) hid.push.apply(hid, c);
+      if (run.flag[i] & 1) cut.push.apply(cut, c);
+    }
+    group.add(line(trackPts, 0x0b7285));
+    if (hid.length) group.add(points(new Float32Array(hid), 0xe03131, 4));
+    if (cut.length) group.add(points(new Float32Array(cut), 0x212529, 9));
+    var fr = frustum(this.data.fov, colour);
+    group.add(fr);
+    var look = new THREE.Mesh(new THREE.SphereBufferGeometry(0.08, 10, 8), new THREE.MeshBasicMaterial({ color: 0xfab005 }));
+    group.add(look);
+    var sightGeom = new THREE.BufferGeometry();
+    sightGeom.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
+    var sight = new THREE.Line(sightGeom, new THREE.LineBasicMaterial({ color: 0x2f9e44 }));
+    group.add(sight);
+    helper(group);
+    this.scene.add(group);
+    this.slots[slot] = { run: run, index: index, group: group, frustum: fr, look: look, sight: sight };
+  };
+  function disposeTree(obj) {
+    obj.traverse(function (o) {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) o.material.dispose();
+    });
+  }
+
+  Replay.prototype.selectRuns = function (a, b, keepTime) {
+    var ui = this.ui;
+    this.runA = a; this.runB = b;
+    ui.run.value = a;
+    ui.sbs.checked = b >= 0;
+    if (b >= 0) ui.runB.value = b;
+    this.makeSlot('a', a);
+    this.makeSlot('b', b);
+    ui.panel.b.box.hidden = b < 0;
+    var run = this.data.runs[a];
+    ui.scrub.max = Math.max(0, run.frames - 1);
+    if (!keepTime) this.time = Math.min(this.time, run.frames ? run.trk[(run.frames - 1) * 5] : 0);
+    this.resize();
+    this.drawMarks();
+    this.draw();
+  };
+  Replay.prototype.drawMarks = function () {
+    var c = this.ui.marks, run = this.data.runs[this.runA], n = run.frames;
+    var w = c.width = Math.max(1, c.clientWidth), h = c.height = Math.max(1, c.clientHeight);
+    var g = c.getContext('2d');
+    g.clearRect(0, 0, w, h);
+    g.fillStyle = '#e9ecef';
+    g.fillRect(0, 0, w, h);
+    for (var i = 0; i < n; ++i) {
+      var x = n > 1 ? i / (n - 1) * (w - 1) : 0;
+      if (run.flag[i] & 2) { g.fillStyle = '#e03131'; g.fillRect(x, h / 2, Math.max(1, w / n), h / 2); }
+      if (run.flag[i] & 1) { g.fillStyle = '#212529'; g.fillRect(x, 0, 2, h); }
+    }
+  };
+  Replay.prototype.setPlaying = function (on) {
+    var self = this;
+    if (on === this.playing) return;
+    this.playing = on;
+    this.ui.play.textContent = on ? '\u2016 pause' : '\u25b6 play';
+    if (!on) return;
+    var run = this.data.runs[this.runA], end = run.frames ? run.trk[(run.frames - 1) * 5] : 0;
+    if (this.time >= end) this.time = run.frames ? run.trk[0] : 0;
+    var last = null;
+    function tick(now) {
+      if (!self.playing || !self.built) return;
+      if (last !== null) self.time += (now - last) / 1000 * self.speed;
+      last = now;
+      if (self.time >= end) { self.time = end; self.setPlaying(false); }
+      self.draw();
+      if (self.playing) requestAnimationFrame(tick);
+    }
+    requestAnimationFrame(tick);
+  };
+  Replay.prototype.seekFrame = function (frame) {
+    var run = this.data.runs[this.runA];
+    frame = Math.max(0, Math.min(run.frames - 1, frame));
+    this.time = run.trk[frame * 5];
+    this.draw();
+  };
+  Replay.prototype.step = function (delta) {
+    this.setPlaying(false);
+    this.seekFrame(this.frameAt(this.data.runs[this.runA], this.time) + delta);
+  };
+  Replay.prototype.resize = function () {
+    if (!this.built && !this.building) return;
+    var ui = this.ui, self = this;
+    var fit = function (renderer, canvas, camera, ratio) {
+      var w = Math.max(1, canvas.clientWidth), h = Math.max(1, canvas.clientHeight);
+      renderer.setPixelRatio(ratio);
+      renderer.setSize(w, h, false);
+      camera.aspect = w / h;
+      camera.updateProjectionMatrix();
+    };
+    fit(this.renderers.world, ui.world, this.worldCamera, window.devicePixelRatio || 1);
+    ['a', 'b'].forEach(function (slot) { fit(self.renderers[slot], ui.panel[slot].canvas, self.panelCameras[slot], 1); });
+  };
+
+  // Places everything at the current time and draws the orbit view and the panels.
+  Replay.prototype.draw = function () {
+    if (!this.ui || !this.scene) return;
+    var self = this, s = this.section, ui = this.ui, t = this.time;
+    this.movers.forEach(function (m) {
+      var p = moverPosition(m.keys, t);
+      m.mesh.position.set(p[1], p[2], p[3]);
+    });
+    var state = {};
+    ['a', 'b'].forEach(function (slot) {
+      var sl = self.slots[slot];
+      if (!sl) return;
+      var run = sl.run, f = self.frameAt(run, t), cam = run.cam, tgt = run.tgt;
+      var eye = new THREE.Vector3(cam[f * 3], cam[f * 3 + 1], cam[f * 3 + 2]);
+      var at = new THREE.Vector3(tgt[f * 3], tgt[f * 3 + 1], tgt[f * 3 + 2]);
+      var hidden = (run.flag[f] & 2) !== 0;
+      sl.frustum.position.copy(eye);
+      sl.frustum.lookAt(at);
+      sl.look.position.copy(at);
+      var sp = sl.sight.geometry.attributes.position;
+      sp.setXYZ(0, eye.x, eye.y, eye.z); sp.setXYZ(1, at.x, at.y, at.z); sp.needsUpdate = true;
+      sl.sight.geometry.computeBoundingSphere();
+      sl.sight.material.color.setHex(hidden ? 0xe03131 : 0x2f9e44);
+      var pc = self.panelCameras[slot];
+      pc.position.copy(eye);
+      pc.up.set(0, 1, 0);
+      pc.lookAt(at);
+      state[slot] = { run: run, frame: f, hidden: hidden };
+      var p = ui.panel[slot];
+      p.box.classList.toggle('replay-hidden-frame', hidden);
+      p.label.textContent = 'main camera: ' + run.label + (hidden ? ' \u2014 look-at point hidden' : '');
+    });
+    var a = state.a;
+    if (!a) return;
+    var moved = this.placeCharacter(a.run, a.frame);
+    if (ui.follow.checked && moved) {
+      this.worldCamera.position.add(moved);
+      this.controls.target.add(moved);
+      this.controls.update();
+    }
+    this.renderers.world.render(this.scene, this.worldCamera);
+    this.renderers.a.render(this.scene, this.panelCameras.a);
+    if (state.b) {
+      this.placeCharacter(state.b.run, state.b.frame);
+      this.renderers.b.render(this.scene, this.panelCameras.b);
+      this.placeCharacter(a.run, a.frame);
+    }
+    ui.scrub.value = a.frame;
+    var run = a.run;
+    ui.time.textContent = 't = ' + run.trk[a.frame * 5].toFixed(2) + ' s, frame ' + a.frame + ' / ' +
+        (run.frames - 1) + ((run.flag[a.frame] & 1) ? ', cut' : '') + (a.hidden ? ', look-at hidden' : '');
+    s.dataset.run = run.id;
+    s.dataset.frame = a.frame;
+    s.dataset.t = run.trk[a.frame * 5];
+    s.dataset.hidden = a.hidden ? '1' : '0';
+    if (state.b) { s.dataset.runB = state.b.run.id; s.dataset.frameB = state.b.frame; }
+    else { delete s.dataset.runB; delete s.dataset.frameB; }
+  };
+  Replay.prototype.drawWorld = function () {
+    if (this.renderers) this.renderers.world.render(this.scene, this.worldCamera);
+  };
+  // Puts the character at a run's frame; returns how far it moved.
+  Replay.prototype.placeCharacter = function (run, f) {
+    var k = run.trk, p = new THREE.Vector3(k[f * 5 + 1], k[f * 5 + 2], k[f * 5 + 3]);
+    var moved = p.clone().sub(this.character.position);
+    this.character.position.copy(p);
+    var yaw = k[f * 5 + 4] * Math.PI / 180;
+    this.facing.position.set(p.x, p.y + this.data.character.size[1] + 0.1, p.z);
+    this.facing.setDirection(new THREE.Vector3(Math.sin(yaw), 0, Math.cos(yaw)));
+    return moved;
+  };
+  // Frees the WebGL contexts and the UI (the page keeps only MAX_BUILT scenes built).
+  Replay.prototype.release = function () {
+    if (!this.built) return;
+    this.setPlaying(false);
+    var self = this;
+    disposeTree(this.scene);
+    this.controls.dispose();
+    Object.keys(this.renderers).forEach(function (k) {
+      self.renderers[k].dispose();
+      self.renderers[k].forceContextLoss();
+    });
+    this.ui.parentNode.removeChild(this.ui);
+    this.ui = null; this.scene = null; this.renderers = null; this.slots = {};
+    this.built = false;
+    var ph = this.section.querySelector('.replay-placeholder');
+    if (ph) ph.hidden = false;
+  };
+
+  var replays = [], builtOrder = [];
+  Replay.noteBuilt = function (r) {
+    builtOrder = builtOrder.filter(function (x) { return x !== r; });
+    builtOrder.push(r);
+    while (builtOrder.length > MAX_BUILT) builtOrder.shift().release();
+  };
+
+  function parseFragment() {
+    var out = {};
+    location.hash.replace(/^#/, '').split('&').forEach(function (kv) {
+      if (!kv) return;
+      var i = kv.indexOf('=');
+      out[decodeURIComponent(i < 0 ? kv : kv.slice(0, i))] = i < 0 ? '' : decodeURIComponent(kv.slice(i + 1));
+    });
+    return out;
+  }
+  function findRun(id) {
+    for (var i = 0; i < replays.length; ++i) {
+      var k = replays[i].runIds.indexOf(id);
+      if (k >= 0) return { replay: replays[i], index: k };
+    }
+    return null;
+  }
+  function applyFragment() {
+    var f = parseFragment();
+    root.classList.remove('replay-solo');
+    Array.prototype.forEach.call(document.querySelectorAll('.replay-solo-target'), function (e) {
+      e.classList.remove('replay-solo-target');
+    });
+    if (f.run === undefined && f.t === undefined && f.panel === undefined) {
+      root.dataset.replay = 'ready';
+      return;
+    }
+    delete root.dataset.replay;
+    var target = f.run !== undefined ? findRun(f.run)
+                                     : (replays.length && replays[0].runIds.length ? { replay: replays[0], index: 0 } : null);
+    if (!target) return fail(f.run !== undefined ? 'no run ' + f.run + ' on this page' : 'no replay on this page');
+    var r = target.replay, b = -1;
+    if (f.run2 !== undefined) {
+      b = r.runIds.indexOf(f.run2);
+      if (b < 0) return fail('no run ' + f.run2 + ' in the scene of ' + r.runIds[target.index]);
+    }
+    var t = f.t !== undefined ? parseFloat(f.t) : 0;
+    if (!isFinite(t)) return fail('t=' + f.t + ' is not a number');
+    r.runA = target.index; r.runB = b; r.time = t;
+    r.build(function () {
+      r.setPlaying(false);
+      r.selectRuns(target.index, b, true);
+      r.time = t;
+      if (f.panel === 'camera' || f.panel === 'world') {
+        root.classList.add('replay-solo');
+        (f.panel === 'camera' ? r.ui.panel.a.canvas : r.ui.world).classList.add('replay-solo-target');
+      } else if (f.panel !== undefined) {
+        return fail('panel=' + f.panel + ': expected camera or world');
+      }
+      r.resize();
+      r.draw();
+      // A solo canvas is fixed to the window: the page stays at the top (a scrolled page
+      // also confuses headless Chromium's --screenshot).
+      if (root.classList.contains('replay-solo')) window.scrollTo(0, 0);
+      else r.section.scrollIntoView({ block: 'start' });
+      requestAnimationFrame(function () { requestAnimationFrame(function () { root.dataset.replay = 'ready'; }); });
+    });
+  }
+
+  function init() {
+    if (typeof THREE === 'undefined' || !THREE.OrbitControls) return fail('three.js is not loaded');
+    Array.prototype.forEach.call(document.querySelectorAll('section.replay'), function (s) {
+      var r = new Replay(s);
+      replays.push(r);
+      var ph = s.querySelector('.replay-placeholder');
+      if (ph) ph.addEventListener('click', function () { r.build(); });
+    });
+    if ('IntersectionObserver' in window) {
+      var io = new IntersectionObserver(function (entries) {
+        entries.forEach(function (e) {
+          if (!e.isIntersecting) return;
+          var r = replays.filter(function (x) { return x.section === e.target; })[0];
+          if (r && !r.built) r.build();
+        });
+      }, { rootMargin: '200px' });
+      replays.forEach(function (r) { io.observe(r.section); });
+    }
+    window.addEventListener('resize', function () {
+      replays.forEach(function (r) { if (r.built) { r.resize(); r.draw(); } });
+    });
+    window.addEventListener('hashchange', applyFragment);
+    applyFragment();
+  }
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', init);
+  else init();
+})();
