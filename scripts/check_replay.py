@@ -307,23 +307,28 @@ def shoot(browser, url, scene_id, size, timeout):
 def read_scene_data(page_path):
     """{scene id: data} for every replay section of the page, inline or in a .js beside it."""
     html = open(page_path, encoding="utf-8").read()
-    scenes = {}
-    for m in re.finditer(r"<section\b([^>]*\bclass=['\"]replay['\"][^>]*)>", html):
-        attrs = dict((k, unescape(v1 or v2)) for k, v1, v2 in
-                     re.findall(r"([\w-]+)=(?:'([^']*)'|\"([^\"]*)\")", m.group(1)))
-        scene_id = attrs.get("data-scene")
-        if "data-src" in attrs:
-            text = open(os.path.join(os.path.dirname(page_path), attrs["data-src"]),
-                        encoding="utf-8").read()
-            text = text[text.index("{"):text.rindex("}") + 1]
-        else:
-            rest = html[m.end():]
-            d = re.search(r"<script\b[^>]*class=['\"]replay-data['\"][^>]*>(.*?)</script>",
-                          rest, re.S)
-            if not d:
-                raise ValueError("scene %s has neither data-src nor replay-data" % scene_id)
-            text = d.group(1)
-        scenes[scene_id] = json.loads(text)
+
+    def attributes(text):
+        return dict((k, unescape(v1 or v2)) for k, v1, v2 in
+                    re.findall(r"([\w-]+)=(?:'([^']*)'|\"([^\"]*)\")", text))
+
+    scenes, current = {}, None
+    # Scripts are matched whole, so a <section> written inside one (the replay's own
+    # comments) is not taken for a section.
+    for m in re.finditer(r"<script\b([^>]*)>(.*?)</script>|<section\b([^>]*)>", html, re.S):
+        if m.group(3) is not None:
+            attrs = attributes(m.group(3))
+            if "replay" not in attrs.get("class", "").split():
+                continue
+            current = attrs.get("data-scene")
+            if "data-src" in attrs:
+                text = open(os.path.join(os.path.dirname(page_path), attrs["data-src"]),
+                            encoding="utf-8").read()
+                scenes[current] = json.loads(text[text.index("{"):text.rindex("}") + 1])
+                current = None
+        elif current is not None and "replay-data" in attributes(m.group(1)).get("class", ""):
+            scenes[current] = json.loads(m.group(2))
+            current = None
     return scenes
 
 
