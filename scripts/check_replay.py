@@ -347,6 +347,18 @@ def runs_of(data):
     return out
 
 
+def short_name(rid, label):
+    """A run's solver label for file names: from 'solver / profile / seed 1', a suite id
+    'scene__solver__profile__s1__hash', or a trace file name."""
+    if "__" in rid:
+        return rid.split("__")[1]
+    name = label.split(" / ")[0] or rid
+    for suffix in (".csv", ".trace"):
+        if name.endswith(suffix):
+            name = name[:-len(suffix)]
+    return re.sub(r"[^\w.-]", "_", name)
+
+
 def find_run(runs, name):
     for r in runs:
         rid, label = r[0], r[1]
@@ -454,7 +466,7 @@ def main():
             started = time.monotonic()
             png, state, errors = shoot(browser, url, scene_id, size, args.timeout)
             shot = os.path.join(args.out, "%s-%s-f%d-%s.png"
-                                % (args.name, label.split(" / ")[0] or rid, frame, panel))
+                                % (args.name, short_name(rid, label), frame, panel))
             with open(shot, "wb") as f:
                 f.write(png)
             stats = picture_stats(png)
