@@ -264,15 +264,21 @@ STATE_SCRIPT = """JSON.stringify((function () {
     if (x.dataset.run) s = s || x;
     if (x.dataset.scene === %s && x.dataset.run) s = x;
   });
+  var canvas = s && s.querySelector(%s), r = canvas && canvas.getBoundingClientRect();
   return {replay: root.dataset.replay || '', error: root.dataset.replayError || '',
           run: s && s.dataset.run, frame: s && s.dataset.frame, t: s && s.dataset.t,
-          hidden: s && s.dataset.hidden, scene: s && s.dataset.scene};
+          hidden: s && s.dataset.hidden, scene: s && s.dataset.scene,
+          canvas: r ? [r.left, r.top, r.width, r.height] : null};
 })())"""
 
+# The canvas each panel shows: the orbit view, or the main camera of the selected run.
+PANEL_CANVAS = {"world": "canvas.replay-world", "camera": "canvas.replay-camera[data-slot=a]"}
 
-def shoot(browser, url, scene_id, size, timeout):
+
+def shoot(browser, url, scene_id, panel, size, timeout):
     """Opens url in a fresh tab, waits for the replay to say ready (or error), and returns
-    (png bytes, state dict, javascript errors)."""
+    (png bytes of the panel's canvas, or of the window when there is none; state dict;
+    javascript errors)."""
     width, height = size
     target = browser.call("Target.createTarget", {"url": "about:blank"})["targetId"]
     session = browser.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
@@ -287,14 +293,19 @@ def shoot(browser, url, scene_id, size, timeout):
         state = {}
         while time.monotonic() < deadline:
             value = browser.call("Runtime.evaluate",
-                                 {"expression": STATE_SCRIPT % json.dumps(scene_id),
+                                 {"expression": STATE_SCRIPT % (json.dumps(scene_id),
+                                                                json.dumps(PANEL_CANVAS[panel])),
                                   "returnByValue": True}, session=session)
             state = json.loads(value.get("result", {}).get("value") or "{}")
             if state.get("replay") in ("ready", "error"):
                 break
             time.sleep(0.2)
-        shot = browser.call("Page.captureScreenshot", {"format": "png"}, session=session,
-                            timeout=timeout)
+        params = {"format": "png"}
+        if state.get("canvas"):
+            x, y, w, h = state["canvas"]
+            if w >= 1 and h >= 1:
+                params["clip"] = {"x": x, "y": y, "width": w, "height": h, "scale": 1}
+        shot = browser.call("Page.captureScreenshot", params, session=session, timeout=timeout)
         png = base64.b64decode(shot["data"])
         time.sleep(0.3)  # let late console events arrive
         return png, state, javascript_errors(browser.events(), session)
@@ -464,7 +475,7 @@ def main():
             fragment = "run=%s&t=%.4f&panel=%s" % (rid, t, panel)
             url = "file://" + page + "#" + fragment
             started = time.monotonic()
-            png, state, errors = shoot(browser, url, scene_id, size, args.timeout)
+            png, state, errors = shoot(browser, url, scene_id, panel, size, args.timeout)
             shot = os.path.join(args.out, "%s-%s-f%d-%s.png"
                                 % (args.name, short_name(rid, label), frame, panel))
             with open(shot, "wb") as f:
@@ -477,6 +488,10 @@ def main():
             if state.get("run") != rid or state.get("frame") != str(frame):
                 problems.append("the page drew run %s frame %s, not run %s frame %d"
                                 % (state.get("run"), state.get("frame"), rid, frame))
+            # The panel asked for fills the window (the fragment's &panel=).
+            box = state.get("canvas")
+            if not box or box[2] * box[3] < 0.9 * size[0] * size[1]:
+                problems.append("the %s canvas does not fill the window: %s" % (panel, box))
             if state.get("hidden") not in (None, "1" if hidden[frame] else "0"):
                 problems.append("the page says data-hidden=%s, its data says %d"
                                 % (state.get("hidden"), hidden[frame]))
