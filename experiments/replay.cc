@@ -1,11 +1,13 @@
 #include "experiments/replay.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -159,14 +161,41 @@ std::string character_track(const std::vector<TraceRow>& trace) {
   return base64_of(out);
 }
 
-std::string run_json(const ReplayRun& run, int shared_track) {
-  std::vector<float> camera, target;
+// Camera and target positions are quantised to 16 bits over the scene's bounds (a step of
+// extent / 65535: about 1 mm over a 60 m scene), which halves the report's largest part;
+// exact Float32 would take the thesis report to 14.4 MB of its 15 MB budget. The grid's
+// origin and step are floats, so the page and the tests decode with the very numbers used.
+struct Grid {
+  Eigen::Vector3f origin;
+  float step = 1;
+  std::uint16_t quantise(double v, int axis) const {
+    const double q = std::round((v - origin[axis]) / static_cast<double>(step));
+    return static_cast<std::uint16_t>(std::clamp(q, 0.0, 65535.0));
+  }
+};
+
+Grid grid_over(const camera::Aabb& bounds) {
+  Grid g;
+  g.origin = bounds.min.cast<float>();
+  const double extent = (bounds.max - g.origin.cast<double>()).maxCoeff();
+  // Rounded up to a float that still covers the extent in 65535 steps.
+  g.step = std::nextafter(static_cast<float>(std::max(extent, 1e-3) / 65535), INFINITY);
+  return g;
+}
+
+std::string quantised(const std::vector<TraceRow>& trace, const Grid& grid, bool camera) {
+  std::vector<std::uint16_t> out;
+  out.reserve(trace.size() * 3);
+  for (const TraceRow& r : trace) {
+    const Eigen::Vector3d& p = camera ? r.camera : r.target;
+    for (int k = 0; k < 3; ++k) out.push_back(grid.quantise(p[k], k));
+  }
+  return base64_of(out);
+}
+
+std::string run_json(const ReplayRun& run, int shared_track, const Grid& grid) {
   std::vector<std::uint8_t> flags;
-  camera.reserve(run.trace.size() * 3);
-  target.reserve(run.trace.size() * 3);
   for (std::size_t i = 0; i < run.trace.size(); ++i) {
-    push3(camera, run.trace[i].camera);
-    push3(target, run.trace[i].target);
     flags.push_back(static_cast<std::uint8_t>((run.trace[i].cut ? 1 : 0) | (run.hidden[i] ? 2 : 0)));
   }
   std::ostringstream out;
@@ -177,9 +206,52 @@ std::string run_json(const ReplayRun& run, int shared_track) {
   } else {
     out << ",\"track\":\"" << character_track(run.trace) << "\"";
   }
-  out << ",\"camera\":\"" << base64_of(camera) << "\",\"target\":\"" << base64_of(target)
-      << "\",\"flags\":\"" << base64_of(flags) << "\"}";
+  out << ",\"camera_q\":\"" << quantised(run.trace, grid, true) << "\",\"target_q\":\""
+      << quantised(run.trace, grid, false) << "\",\"flags\":\"" << base64_of(flags) << "\"}";
   return out.str();
+}
+
+// A level's triangles: written once per page however many scenes stand on it (the levels
+// suite has five walks per map), under a key that is a hash of the mesh itself.
+std::string level_key(const camera::TriangleMesh& mesh) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  auto mix = [&h](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  mix(mesh.vertices.data(), mesh.vertices.size() * sizeof(Eigen::Vector3f));
+  mix(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
+  char key[24];
+  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
+  return key;
+}
+
+std::string level_json(const camera::TriangleMesh& mesh) {
+  std::vector<float> positions;
+  positions.reserve(mesh.vertices.size() * 3);
+  for (const Eigen::Vector3f& v : mesh.vertices) {
+    positions.push_back(v.x());
+    positions.push_back(v.y());
+    positions.push_back(v.z());
+  }
+  std::string indices;
+  const bool small = mesh.vertices.size() <= 65536;
+  if (small) {
+    std::vector<std::uint16_t> idx;
+    idx.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles) {
+      for (std::uint32_t i : t) idx.push_back(static_cast<std::uint16_t>(i));
+    }
+    indices = base64_of(idx);
+  } else {
+    std::vector<std::uint32_t> idx;
+    idx.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
+    indices = base64_of(idx);
+  }
+  return "{\"positions\":\"" + base64_of(positions) + "\",\"indices\":\"" + indices +
+         "\",\"index_type\":\"" + (small ? "u16" : "u32") + "\",\"triangles\":" +
+         std::to_string(mesh.triangles.size()) + "}";
 }
 
 // The scene's data as one JSON object (see replay.js, "Data").
@@ -192,11 +264,15 @@ std::string scene_json(const ReplayScene& rs) {
   for (const ReplayRun& run : rs.runs) {
     for (const TraceRow& r : run.trace) {
       bounds.merge(r.camera);
+      bounds.merge(r.target);
       bounds.merge(r.character);
     }
   }
   if (!std::isfinite(bounds.min.x())) bounds = {Eigen::Vector3d(-1, 0, -1), Eigen::Vector3d(1, 2, 1)};
   out << ",\"bounds\":[" << json_vec3(bounds.min) << "," << json_vec3(bounds.max) << "]";
+  const Grid grid = grid_over(bounds);
+  out << ",\"grid\":{\"origin\":" << json_vec3(grid.origin.cast<double>())
+      << ",\"step\":" << json_number(grid.step) << "}";
   out << ",\"character\":{\"size\":" << json_vec3(scene.character().size)
       << ",\"look_at_height\":" << json_number(scene.character().look_at_height) << "}";
 
@@ -216,32 +292,8 @@ std::string scene_json(const ReplayScene& rs) {
   out << ",\"areas\":\"" << base64_of(areas) << "\",\"area_kinds\":\"" << kinds << "\"";
 
   if (const camera::Level* level = scene.level(); level && !level->mesh.empty()) {
-    const camera::TriangleMesh& mesh = level->mesh;
-    std::vector<float> positions;
-    positions.reserve(mesh.vertices.size() * 3);
-    for (const Eigen::Vector3f& v : mesh.vertices) {
-      positions.push_back(v.x());
-      positions.push_back(v.y());
-      positions.push_back(v.z());
-    }
-    std::string indices;
-    const bool small = mesh.vertices.size() <= 65536;
-    if (small) {
-      std::vector<std::uint16_t> idx;
-      idx.reserve(mesh.triangles.size() * 3);
-      for (const auto& t : mesh.triangles) {
-        for (std::uint32_t i : t) idx.push_back(static_cast<std::uint16_t>(i));
-      }
-      indices = base64_of(idx);
-    } else {
-      std::vector<std::uint32_t> idx;
-      idx.reserve(mesh.triangles.size() * 3);
-      for (const auto& t : mesh.triangles) idx.insert(idx.end(), t.begin(), t.end());
-      indices = base64_of(idx);
-    }
-    out << ",\"level\":{\"positions\":\"" << base64_of(positions) << "\",\"indices\":\"" << indices
-        << "\",\"index_type\":\"" << (small ? "u16" : "u32") << "\",\"triangles\":"
-        << mesh.triangles.size() << "}";
+    out << ",\"level\":{\"key\":\"" << level_key(level->mesh) << "\",\"triangles\":"
+        << level->mesh.triangles.size() << "}";
   } else {
     out << ",\"level\":null";
   }
@@ -272,7 +324,7 @@ std::string scene_json(const ReplayScene& rs) {
       }
     }
     if (shared < 0) owners.push_back(i);
-    out << (i ? "," : "") << run_json(rs.runs[i], shared);
+    out << (i ? "," : "") << run_json(rs.runs[i], shared, grid);
   }
   out << "]}";
   return out.str();
@@ -319,19 +371,37 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
     }
   }
   const std::string json = scene_json(scene);
+  std::string level_block;  // the level's triangles, when this page does not have them yet
+  if (const camera::Level* level = scene.scene->level(); level && !level->mesh.empty()) {
+    const std::string key = level_key(level->mesh);
+    if (!options.levels_on_page || options.levels_on_page->insert(key).second) {
+      if (options.assets_dir.empty()) {
+        level_block = "<script type='application/json' class='replay-level' data-level='" + key +
+                      "'>" + level_json(level->mesh) + "</script>";
+      } else {
+        write_file(std::filesystem::path(options.assets_dir) / ("replay-level-" + key + ".js"),
+                   "(window.sightlineReplayLevels=window.sightlineReplayLevels||{})[\"" + key +
+                       "\"]=" + level_json(level->mesh) + ";\n");
+        level_block = "<script type='application/json' class='replay-level' data-level='" + key +
+                      "' data-src='" + escape(options.assets_href + "/replay-level-" + key + ".js") +
+                      "'>null</script>";
+      }
+    }
+  }
   std::ostringstream out;
   std::string run_ids;
   for (const ReplayRun& run : scene.runs) run_ids += (run_ids.empty() ? "" : " ") + run.id;
   out << "<section class='replay' data-scene='" << escape(scene.id) << "' data-runs='"
       << escape(run_ids) << "'";
   if (options.assets_dir.empty()) {
-    out << "><script type='application/json' class='replay-data'>" << json << "</script>";
+    out << ">" << level_block << "<script type='application/json' class='replay-data'>" << json
+        << "</script>";
   } else {
     const std::string file = "replay-" + replay_safe_id(scene.id) + ".js";
     write_file(std::filesystem::path(options.assets_dir) / file,
                "(window.sightlineReplayData=window.sightlineReplayData||{})[" +
                    json_string(scene.id) + "]=" + json + ";\n");
-    out << " data-src='" << escape(options.assets_href + "/" + file) << "'>";
+    out << " data-src='" << escape(options.assets_href + "/" + file) << "'>" << level_block;
   }
   out << "<div class='replay-placeholder'>3D replay of " << escape(scene.scene->name()) << " ("
       << scene.runs.size() << " run" << (scene.runs.size() == 1 ? "" : "s")
@@ -340,7 +410,9 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
 }
 
 std::string replay_page(const std::string& title, const std::vector<ReplayScene>& scenes,
-                        const ReplayOptions& options) {
+                        const ReplayOptions& page_options) {
+  ReplayOptions options = page_options;  // a page of its own: no level written yet
+  options.levels_on_page = std::make_shared<std::set<std::string>>();
   std::string out = "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>" +
                     escape(title) + "</title>";
   out += "<style>body{font-family:system-ui,sans-serif;margin:24px;color:#222}</style>";

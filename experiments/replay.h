@@ -20,6 +20,8 @@
 // a browser rely on it.
 #pragma once
 
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -50,6 +52,10 @@ struct ReplayOptions {
   std::string assets_href;
   // Where Debian's libjs-three lives (tests point it elsewhere to check the error).
   std::string three_dir = "/usr/share/javascript/three";
+  // The levels (keys) already written on this page: scenes on the same level share its
+  // triangles, written once. replay_page starts a fresh set; a caller writing sections
+  // itself uses one ReplayOptions per page (copies share the set). Null: always write.
+  std::shared_ptr<std::set<std::string>> levels_on_page = std::make_shared<std::set<std::string>>();
 };
 
 // CSS, three.js (with its OrbitControls) and the replay code: once per page, inside <head>

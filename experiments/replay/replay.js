@@ -4,7 +4,8 @@
  * DOM contract (scripts that check the page in a browser rely on it; docs/EXPERIMENTS.md):
  *  - Each scene: <section class="replay" data-scene="SCENE_ID" data-runs="RUN_ID RUN_ID ...">
  *    holding its data (<script type="application/json" class="replay-data">, or data-src =
- *    a .js file beside the page that sets window.sightlineReplayData[SCENE_ID]).
+ *    a .js file beside the page that sets window.sightlineReplayData[SCENE_ID]), and the
+ *    first section on a level also holds the level (script.replay-level, see Data).
  *  - Built lazily (scrolled into view, clicked, or asked for by the fragment), it holds:
  *    canvas.replay-world (orbit view), canvas.replay-camera[data-slot=a] (main camera of the
  *    selected run) and canvas.replay-camera[data-slot=b] (second run, side-by-side mode),
@@ -28,11 +29,14 @@
  *
  * Data (one JSON object per scene, numbers in base64 little-endian typed arrays):
  *  bounds [[min],[max]], fov, character {size, look_at_height}, boxes (Float32, 6 per box:
- *  min xyz, max xyz), areas (same) + area_kinds ("e"/"s" per area), level null or
- *  {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, movers [{name,
+ *  min xyz, max xyz), areas (same) + area_kinds ("e"/"s" per area), level null or {key,
+ *  triangles}: the triangles are once per page in script.replay-level[data-level=KEY]
+ *  (JSON {positions Float32 xyz, indices Uint16/Uint32 (index_type), triangles}, or data-src
+ *  naming a .js beside the page that sets window.sightlineReplayLevels[KEY]), movers [{name,
  *  size, keys [[t,x,y,z]...]}] (base centre, linear between keys, held outside), runs [{id,
  *  label, frames, track (Float32 t,x,y,z,yaw per frame) or track_of (index of the run whose
- *  track is the same), camera, target (Float32 xyz per frame), flags (Uint8: 1 cut, 2 hidden)}].
+ *  track is the same), camera_q, target_q (Uint16 xyz per frame on the scene's grid {origin,
+ *  step}: metres = origin + q * step), flags (Uint8: 1 cut, 2 hidden)}].
  */
 (function () {
   'use strict';
@@ -58,6 +62,12 @@
   function u16(b64) { var a = bytes(b64); return new Uint16Array(a.buffer, 0, a.length >> 1); }
   function u32(b64) { var a = bytes(b64); return new Uint32Array(a.buffer, 0, a.length >> 2); }
 
+  // Uint16 xyz triples on the scene's grid back to metres.
+  function dequantise(b64, grid) {
+    var q = u16(b64), out = new Float32Array(q.length), o = grid.origin, step = grid.step;
+    for (var i = 0; i < q.length; ++i) out[i] = o[i % 3] + q[i] * step;
+    return out;
+  }
   function el(tag, cls, parent, text) {
     var e = document.createElement(tag);
     if (cls) e.className = cls;
@@ -147,29 +157,52 @@
     this.time = 0; this.speed = 1; this.playing = false;
     this.onBuilt = [];
   }
+  function loadScript(src, onload, onerror) {
+    var tag = document.createElement('script');
+    tag.src = src;
+    tag.onload = onload;
+    tag.onerror = onerror;
+    document.head.appendChild(tag);
+  }
   Replay.prototype.load = function (done) {
     var self = this, s = this.section;
     if (this.data) return done();
+    var withLevel = function (raw) {
+      self.loadLevel(raw.level, function (level) {
+        raw.levelData = level;
+        self.data = self.decode(raw);
+        done();
+      });
+    };
     var inline = s.querySelector('script.replay-data');
-    if (inline) { this.data = this.decode(JSON.parse(inline.textContent)); return done(); }
+    if (inline) return withLevel(JSON.parse(inline.textContent));
     var store = window.sightlineReplayData || {};
-    if (store[this.id]) { this.data = this.decode(store[this.id]); return done(); }
-    var tag = document.createElement('script');
-    tag.src = s.dataset.src;
-    tag.onload = function () {
+    if (store[this.id]) return withLevel(store[this.id]);
+    loadScript(s.dataset.src, function () {
       var d = (window.sightlineReplayData || {})[self.id];
       if (!d) return self.showError('the data file ' + s.dataset.src + ' holds no scene ' + self.id);
-      self.data = self.decode(d);
-      done();
-    };
-    tag.onerror = function () { self.showError('cannot load ' + s.dataset.src + ' (kept beside the report?)'); };
-    document.head.appendChild(tag);
+      withLevel(d);
+    }, function () { self.showError('cannot load ' + s.dataset.src + ' (kept beside the report?)'); });
+  };
+  // A level's triangles are on the page once (script.replay-level[data-level=KEY], inline or
+  // naming a file beside the page), whichever scene wrote them.
+  Replay.prototype.loadLevel = function (ref, done) {
+    var self = this, store = window.sightlineReplayLevels = window.sightlineReplayLevels || {};
+    if (!ref) return done(null);
+    if (store[ref.key]) return done(store[ref.key]);
+    var tag = document.querySelector('script.replay-level[data-level="' + ref.key + '"]');
+    if (!tag) return this.showError('the level ' + ref.key + ' is not on this page');
+    if (!tag.dataset.src) { store[ref.key] = JSON.parse(tag.textContent); return done(store[ref.key]); }
+    loadScript(tag.dataset.src, function () {
+      if (!store[ref.key]) return self.showError(tag.dataset.src + ' holds no level ' + ref.key);
+      done(store[ref.key]);
+    }, function () { self.showError('cannot load ' + tag.dataset.src + ' (kept beside the report?)'); });
   };
   Replay.prototype.decode = function (d) {
     d.boxArray = f32(d.boxes);
     d.areaArray = f32(d.areas);
     d.runs.forEach(function (r) {
-      r.cam = f32(r.camera); r.tgt = f32(r.target); r.flag = bytes(r.flags);
+      r.cam = dequantise(r.camera_q, d.grid); r.tgt = dequantise(r.target_q, d.grid); r.flag = bytes(r.flags);
       if (r.track) r.trk = f32(r.track);
     });
     d.runs.forEach(function (r) { if (!r.trk) r.trk = d.runs[r.track_of].trk; });
@@ -232,6 +265,10 @@
     var l3 = el('label', '', bar);
     ui.follow = el('input', 'replay-follow', l3); ui.follow.type = 'checkbox';
     l3.appendChild(document.createTextNode(' orbit follows the character'));
+    var l4 = el('label', '', bar);
+    ui.cutaway = el('input', 'replay-cutaway', l4); ui.cutaway.type = 'checkbox';
+    ui.cutaway.checked = !!d.level;  // a level's ceilings hide the character from the orbit view
+    l4.appendChild(document.createTextNode(' cut away above the camera'));
     d.runs.forEach(function (r, i) {
       el('option', '', ui.run, r.label).value = i;
       el('option', '', ui.runB, r.label).value = i;
@@ -255,7 +292,8 @@
     el('div', 'replay-legend', ui, 'Magenta: the character; yellow: the look-at point with the ' +
        'sight line (green visible, red hidden by the independent check); orange / blue: the ' +
        'camera and its path; red dots: frames with the look-at point hidden; dark dots: cuts. ' +
-       'Drag to orbit, right-drag to pan, wheel to zoom. Keys: space play, arrows step.');
+       'Drag to orbit, right-drag to pan, wheel to zoom, double-click to come back to the ' +
+       'character. Keys: space play, arrows step.');
 
     var tl = el('div', 'replay-timeline', ui);
     ui.back = el('button', 'replay-back', tl, '\u25c0 frame');
@@ -282,10 +320,10 @@
     if (d.boxArray.length) {
       scene.add(new THREE.Mesh(boxesGeometry(d.boxArray), new THREE.MeshLambertMaterial({ color: 0xa39a8c })));
     }
-    if (d.level) {
-      var g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.BufferAttribute(f32(d.level.positions), 3));
-      g.setIndex(new THREE.BufferAttribute(d.level.index_type === 'u16' ? u16(d.level.indices) : u32(d.level.indices), 1));
+    if (d.levelData) {
+      var lv = d.levelData, g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(f32(lv.positions), 3));
+      g.setIndex(new THREE.BufferAttribute(lv.index_type === 'u16' ? u16(lv.indices) : u32(lv.indices), 1));
       var flat = g.toNonIndexed();  // flat shading: one normal per triangle
       g.dispose();
       flat.computeVertexNormals();
@@ -326,6 +364,7 @@
     this.worldCamera.layers.enable(LAYER_HELPERS);
     this.worldCamera.position.copy(centre).add(new THREE.Vector3(0.45, 0.6, 0.75).multiplyScalar(diag * 0.8));
     this.renderers = {};
+    this.cutPlane = new THREE.Plane(new THREE.Vector3(0, -1, 0), 0);  // keeps y <= constant
     this.renderers.world = new THREE.WebGLRenderer({ canvas: ui.world, antialias: true, preserveDrawingBuffer: true });
     this.controls = new THREE.OrbitControls(this.worldCamera, ui.world);
     this.controls.target.copy(centre);
@@ -343,6 +382,7 @@
     ui.runB.onchange = function () { if (ui.sbs.checked) self.selectRuns(self.runA, +ui.runB.value); };
     ui.sbs.onchange = function () { self.selectRuns(self.runA, ui.sbs.checked ? +ui.runB.value : -1); };
     ui.follow.onchange = function () { self.draw(); };
+    ui.cutaway.onchange = function () { self.draw(); };
     ui.play.onclick = function () { self.setPlaying(!self.playing); };
     ui.back.onclick = function () { self.step(-1); };
     ui.forward.onclick = function () { self.step(1); };
@@ -356,6 +396,16 @@
       if (e.key === 'ArrowRight') { self.step(1); e.preventDefault(); }
     });
     this.selectRuns(this.runA, this.runB, true);
+    // A level is big: start close to the character (double-click the view to come back).
+    if (d.level) this.frameCharacter();
+    ui.world.addEventListener('dblclick', function () { self.frameCharacter(); });
+  };
+  Replay.prototype.frameCharacter = function () {
+    var p = this.character.position.clone().add(new THREE.Vector3(0, this.data.character.size[1] / 2, 0));
+    this.controls.target.copy(p);
+    this.worldCamera.position.copy(p).add(new THREE.Vector3(0.45, 0.6, 0.75).multiplyScalar(12));
+    this.controls.update();
+    this.draw();
   };
 
   // The helpers of one run in one slot: camera path, hidden and cut markers, frustum,
@@ -508,6 +558,10 @@
       this.controls.target.add(moved);
       this.controls.update();
     }
+    // The orbit view only: everything above the camera and the character's head is cut away.
+    var top = Math.max(this.character.position.y + this.data.character.size[1], this.panelCameras.a.position.y) + 0.3;
+    this.cutPlane.constant = top;
+    this.renderers.world.clippingPlanes = ui.cutaway.checked ? [this.cutPlane] : [];
     this.renderers.world.render(this.scene, this.worldCamera);
     this.renderers.a.render(this.scene, this.panelCameras.a);
     if (state.b) {

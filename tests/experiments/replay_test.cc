@@ -148,13 +148,21 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
   EXPECT_EQ(d["fov"], 60);
 
   const auto& mesh = scene->level()->mesh;
-  const std::vector<float> positions = decode<float>(d["level"]["positions"]);
+  const std::string section = replay_section(rs, {});
+  ASSERT_EQ(d["level"]["triangles"], 2);
+  const std::string open = "<script type='application/json' class='replay-level' data-level='" +
+                           d["level"]["key"].get<std::string>() + "'>";
+  const std::size_t at = section.find(open);
+  ASSERT_NE(at, std::string::npos);
+  const nlohmann::json level = nlohmann::json::parse(
+      section.substr(at + open.size(), section.find("</script>", at) - at - open.size()));
+  const std::vector<float> positions = decode<float>(level["positions"]);
   ASSERT_EQ(positions.size(), mesh.vertices.size() * 3);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(positions[v * 3 + k], mesh.vertices[v][k]);
   }
-  ASSERT_EQ(d["level"]["index_type"], "u16");
-  const std::vector<std::uint16_t> indices = decode<std::uint16_t>(d["level"]["indices"]);
+  ASSERT_EQ(level["index_type"], "u16");
+  const std::vector<std::uint16_t> indices = decode<std::uint16_t>(level["indices"]);
   ASSERT_EQ(indices.size(), 6u);
   for (std::size_t t = 0; t < 2; ++t) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(indices[t * 3 + k], mesh.triangles[t][k]);
@@ -164,6 +172,13 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
   EXPECT_EQ(d["movers"][0]["keys"][1][0], 1.5);
   EXPECT_EQ(d["movers"][0]["keys"][1][3], 2.5);
 
+  // The quantisation grid spans the scene and the runs in 65535 steps, no coarser.
+  const double step = d["grid"]["step"];
+  const double origin[3] = {d["grid"]["origin"][0], d["grid"]["origin"][1], d["grid"]["origin"][2]};
+  EXPECT_LE(origin[0], -10.0);  // the level's corner
+  EXPECT_LE(step, 20.3 / 65535 * 1.0001);  // the level's z extent, the largest
+  EXPECT_GT(step, 20.3 / 65535 * 0.9999);
+
   ASSERT_EQ(d["runs"].size(), 2u);
   for (std::size_t r = 0; r < 2; ++r) {
     const ReplayRun& run = rs.runs[r];
@@ -172,8 +187,8 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
     EXPECT_EQ(j["frames"], run.trace.size());
     ASSERT_TRUE(j.contains("track")) << "run " << r << " has its own character";
     const std::vector<float> track = decode<float>(j["track"]);
-    const std::vector<float> camera = decode<float>(j["camera"]);
-    const std::vector<float> target = decode<float>(j["target"]);
+    const std::vector<std::uint16_t> camera = decode<std::uint16_t>(j["camera_q"]);
+    const std::vector<std::uint16_t> target = decode<std::uint16_t>(j["target_q"]);
     const std::vector<std::uint8_t> flags = decode<std::uint8_t>(j["flags"]);
     ASSERT_EQ(track.size(), run.trace.size() * 5);
     ASSERT_EQ(camera.size(), run.trace.size() * 3);
@@ -185,8 +200,10 @@ TEST(Replay, SceneAndRunBuffersDecodeToExactlyTheTraceAndSceneNumbers) {
       EXPECT_EQ(track[i * 5 + 4], static_cast<float>(row.character_yaw));
       for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(track[i * 5 + 1 + k], static_cast<float>(row.character[k]));
-        EXPECT_EQ(camera[i * 3 + k], static_cast<float>(row.camera[k]));
-        EXPECT_EQ(target[i * 3 + k], static_cast<float>(row.target[k]));
+        // Quantised: within half a step of the trace, as the page computes it (in doubles
+        // here, Float32 there: a float's rounding is far below the step).
+        EXPECT_NEAR(origin[k] + camera[i * 3 + k] * step, row.camera[k], step * 0.5 + 1e-9);
+        EXPECT_NEAR(origin[k] + target[i * 3 + k] * step, row.target[k], step * 0.5 + 1e-9);
       }
       EXPECT_EQ(flags[i], (row.cut ? 1 : 0) | (run.hidden[i] ? 2 : 0)) << "frame " << i;
     }
@@ -202,6 +219,23 @@ TEST(Replay, ACharacterTrackSharedByRunsIsWrittenOnce) {
   EXPECT_EQ(d["runs"][1]["track_of"], 0);
   EXPECT_EQ(d["runs"][2]["track_of"], 0);
   EXPECT_EQ(count(section, "\"track\":"), 1u);
+}
+
+TEST(Replay, ALevelSharedByScenesIsWrittenOncePerPage) {
+  auto a = make_scene(true);
+  auto b = std::make_shared<camera::Scene>(*a);  // another scene on the same level
+  ReplayOptions options;
+  std::string sections = replay_section({"a", a.get(), {make_run("a1", 5, 0)}}, options) +
+                         replay_section({"b", b.get(), {make_run("b1", 5, 0)}}, options);
+  EXPECT_EQ(count(sections, "class='replay-level'"), 1u);
+  EXPECT_EQ(inline_data(sections)["level"]["key"],
+            inline_data(sections.substr(sections.find("data-scene='b'")))["level"]["key"]);
+  // A page of its own writes it again; so does a caller with no record of the page.
+  const std::string page = replay_page("p", {{"a", a.get(), {make_run("a1", 5, 0)}},
+                                             {"b", b.get(), {make_run("b1", 5, 0)}}}, options);
+  EXPECT_EQ(count(page, "class='replay-level'"), 1u);
+  options.levels_on_page = nullptr;
+  EXPECT_EQ(count(replay_section({"a", a.get(), {make_run("a1", 5, 0)}}, options), "class='replay-level'"), 1u);
 }
 
 TEST(Replay, HeadInlinesThreeJsWithItsOrbitControlsAndTheReplayCode) {
@@ -234,9 +268,9 @@ TEST(Replay, SectionSizeGrowsLinearlyWithFrames) {
   };
   const double s1 = size(500), s2 = size(1000), s4 = size(2000);
   EXPECT_NEAR((s4 - s2) / (s2 - s1), 2.0, 0.02);
-  // Per frame: one shared character track (5 floats) and per run camera, target (6 floats)
-  // and a flag byte, base64: (20 + 2 * 25) * 4 / 3 = 93.3 bytes.
-  EXPECT_NEAR((s2 - s1) / 500, 93.3, 1.0);
+  // Per frame: one shared character track (5 floats) and per run camera and target (6
+  // Uint16) and a flag byte, base64: (20 + 2 * 13) * 4 / 3 = 61.3 bytes.
+  EXPECT_NEAR((s2 - s1) / 500, 61.3, 1.0);
 }
 
 TEST(Replay, TextIsEscapedSoALabelCannotEndTheDataBlock) {
@@ -287,7 +321,14 @@ TEST(Replay, AssetsBesideWritesThreeJsAndSceneDataAsScriptsThePageReferences) {
   json = json.substr(0, json.rfind(';'));
   const nlohmann::json d = nlohmann::json::parse(json);
   EXPECT_EQ(d["runs"][0]["id"], "r1");
-  EXPECT_EQ(decode<float>(d["runs"][0]["camera"]).size(), 150u);
+  EXPECT_EQ(decode<std::uint16_t>(d["runs"][0]["camera_q"]).size(), 150u);
+  const std::string key = d["level"]["key"];
+  EXPECT_NE(page.find("data-level='" + key + "' data-src='report-assets/replay-level-" + key + ".js'"),
+            std::string::npos);
+  std::ifstream level(dir / ("report-assets/replay-level-" + key + ".js"));
+  std::stringstream level_text;
+  level_text << level.rdbuf();
+  EXPECT_EQ(level_text.str().rfind("(window.sightlineReplayLevels=window.sightlineReplayLevels||{})[\"" + key + "\"]={\"positions\":", 0), 0u);
   std::filesystem::remove_all(dir);
 }
 

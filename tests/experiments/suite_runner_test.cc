@@ -3,6 +3,7 @@
 // self-contained report.
 #include "experiments/suite_runner.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -181,12 +182,31 @@ TEST(SuiteReport, IsSelfContainedWithPicturesOfEveryScene) {
   ScratchDir dir("runner-report");
   const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
   const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  // Without the 3D replay: no script at all, no external reference.
+  ReportOptions still;
+  still.replay = false;
+  write_report(suite, outcome, dir.path("out"), still);
+  const std::string stills = read_text(dir.path("out/report.html"));
+  EXPECT_EQ(stills.find("http:"), std::string::npos);
+  EXPECT_EQ(stills.find("https:"), std::string::npos);
+  EXPECT_EQ(stills.find("<link"), std::string::npos);
+  EXPECT_EQ(stills.find("<script"), std::string::npos);
+  // With it (the default): scripts inline only (three.js's own text names URLs, such as
+  // XML namespaces, which are not references), one replay section per scene with its runs.
   write_report(suite, outcome, dir.path("out"));
   const std::string html = read_text(dir.path("out/report.html"));
-  EXPECT_EQ(html.find("http:"), std::string::npos);
-  EXPECT_EQ(html.find("https:"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
-  EXPECT_EQ(html.find("<script"), std::string::npos);
+  for (std::size_t at = html.find(" src="); at != std::string::npos; at = html.find(" src=", at + 1)) {
+    EXPECT_EQ(html.compare(at, 11, " src='data:"), 0) << html.substr(at, 40);  // pictures only
+  }
+  EXPECT_FALSE(fs::exists(dir.path("out/report-assets")));
+  for (const char* scene : {"room", "wall"}) {
+    const std::size_t at = html.find(std::string("<section class='replay' data-scene='") + scene + "'");
+    ASSERT_NE(at, std::string::npos) << scene;
+    const std::size_t runs = html.find("data-runs='", at) + 11;
+    const std::string ids = html.substr(runs, html.find('\'', runs) - runs);
+    EXPECT_EQ(std::count(ids.begin(), ids.end(), ' '), 1) << ids;  // two runs
+  }
   EXPECT_NE(html.find("data:image/png;base64,iVBORw0KGgo"), std::string::npos);  // PNG magic
   // Each scene: a top and a side view per run (2 runs), three plots.
   for (const char* scene : {"room", "wall"}) {

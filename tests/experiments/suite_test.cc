@@ -170,6 +170,20 @@ camera:
   }
 }
 
+TEST(SuiteFile, ReplayAssetsAreInlineUnlessTheReportSaysBesideAndOtherValuesAreErrors) {
+  ScratchDir dir("suite-replay-assets");
+  const std::string head = "name: x\ncamera:\n  scenes: [scenes/wall.yaml]\n  solvers: [spring-arm]\n";
+  EXPECT_FALSE(read_suite_file(dir.write("a.yaml", head)).replay_assets_beside);
+  EXPECT_FALSE(read_suite_file(dir.write("b.yaml", head + "report: {replay_assets: inline}\n"))
+                   .replay_assets_beside);
+  EXPECT_TRUE(read_suite_file(dir.write("c.yaml", head + "report: {replay_assets: beside}\n"))
+                  .replay_assets_beside);
+  const std::string bad = dir.write("d.yaml", head + "report:\n  replay_assets: next-door\n");
+  const std::string message = error_of([&] { read_suite_file(bad); });
+  EXPECT_NE(message.find("d.yaml:6"), std::string::npos) << message;
+  EXPECT_NE(message.find("inline or beside"), std::string::npos) << message;
+}
+
 TEST(SuiteFile, AGlobMatchingNothingIsAnError) {
   ScratchDir dir("suite-glob");
   const std::string path = dir.write("suite.yaml", R"(name: x
