@@ -395,10 +395,10 @@ def frames_in(flags, value, count):
     stretch (away from where visibility changes), then more from the longest one."""
     runs = stretches(flags, value)
     picked = [(a + b - 1) // 2 for a, b in runs[:count]]
-    if runs and len(picked) < count:
+    extra = count - len(picked)
+    if runs and extra > 0:
         a, b = runs[0]
-        for k in range(1, count - len(picked) + 1):
-            picked.append(a + (b - a) * k // (count - len(picked) + 2))
+        picked += [a + (b - a) * k // (extra + 2) for k in range(1, extra + 1)]
     return sorted(set(picked))
 
 
@@ -451,8 +451,11 @@ def main():
     # (run, frame, panel, expect): expect "world", "magenta" or "no-magenta".
     plan = []
     for run in visible_runs:
-        for f in frames_in(run[3], False, args.visible_frames):
-            plan.append((run, f, "camera", "magenta"))
+        frames = frames_in(run[3], False, args.visible_frames)
+        if not frames:
+            print("check-replay: note: run %s has no frame with the look-at point visible"
+                  % run[0])
+        plan += [(run, f, "camera", "magenta") for f in frames]
     for run in hidden_runs:
         frames = frames_in(run[3], True, 1)
         if not frames:
