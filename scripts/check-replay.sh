@@ -26,7 +26,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$(realpath -m "$2")"; shift 2 ;;
     --out) out="$(realpath -m "$2")"; shift 2 ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "check-replay: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) reports+=("$(realpath -m "$1")"); shift ;;
   esac
