@@ -335,7 +335,11 @@ def read_scene_data(page_path):
             if "data-src" in attrs:
                 text = open(os.path.join(os.path.dirname(page_path), attrs["data-src"]),
                             encoding="utf-8").read()
-                scenes[current] = json.loads(text[text.index("{"):text.rindex("}") + 1])
+                # (window.sightlineReplayData=...||{})["ID"]={...};
+                d = re.search(r"\]\s*=\s*(\{.*\})\s*;?\s*$", text, re.S)
+                if not d:
+                    raise ValueError("%s: no scene data assignment" % attrs["data-src"])
+                scenes[current] = json.loads(d.group(1))
                 current = None
         elif current is not None and "replay-data" in attributes(m.group(1)).get("class", ""):
             scenes[current] = json.loads(m.group(2))
