@@ -10,10 +10,11 @@
 #
 # Without report folders it makes its own from experiments/suites/replay-check.yaml (the
 # enclosed room and one short level walk, a few seconds) with DIR/apps/sightline (--build,
-# default ./build), plus a `sightline view` page of the room's two traces, and checks all
-# three. Given report folders (from `sightline run experiments/suites/thesis.yaml` and
-# `.../levels.yaml`) it checks those: the scene inside-room in the first, the first scene of
-# the second. Screenshots and the browser's logs go to OUT/shots (default BUILD/replay-check).
+# default ./build), plus a `sightline view` page of the room's two traces (its three.js and
+# data beside it, in view-assets/), and checks all three. Given report folders (from
+# `sightline run experiments/suites/thesis.yaml` and `.../levels.yaml`) it checks those: the
+# scene inside-room in the first, the first scene of the second. Screenshots and the
+# browser's logs go to OUT/shots (default BUILD/replay-check).
 #
 # Exit status: 0 passed; 1 a check failed; 2 bad usage or a broken setup; 77 chromium is not
 # installed (ctest reports the test as skipped).
@@ -26,7 +27,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$(realpath -m "$2")"; shift 2 ;;
     --out) out="$(realpath -m "$2")"; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "check-replay: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) reports+=("$(realpath -m "$1")"); shift ;;
   esac
@@ -58,8 +59,10 @@ if [ ${#reports[@]} -eq 0 ]; then
   "$sightline" run "$root/experiments/suites/replay-check.yaml" --out "$out/suite" >/dev/null
   room=("$out"/suite/runs/inside-room__bourne-published__*.trace.csv
         "$out"/suite/runs/inside-room__occlusion-octree__*.trace.csv)
+  # With its three.js and data beside the page (the report has them inline): both ways load.
+  rm -rf "$out/view-assets"
   "$sightline" view "$root/experiments/scenes/inside-room.yaml" --trace "${room[0]}" \
-    --trace "${room[1]}" --out "$out/view.html" >/dev/null
+    --trace "${room[1]}" --out "$out/view.html" --assets beside >/dev/null
   thesis="$out/suite/report.html"
   level="$out/suite/report.html"
   level_scene=(--scene aggressor-walk4)
