@@ -396,13 +396,16 @@ def stretches(flags, value):
 
 def frames_in(flags, value, count):
     """Up to `count` frames with flag == value, each in the middle of a different longest
-    stretch (away from where visibility changes), then more from the longest one."""
+    stretch (away from where visibility changes), then more spread over the longest one."""
     runs = stretches(flags, value)
     picked = [(a + b - 1) // 2 for a, b in runs[:count]]
-    extra = count - len(picked)
-    if runs and extra > 0:
+    if runs and len(picked) < count:
+        # Evenly over the longest stretch, away (half a second at 60 fps) from those picked.
         a, b = runs[0]
-        picked += [a + (b - a) * k // (extra + 2) for k in range(1, extra + 1)]
+        for k in range(1, count + 1):
+            f = a + (b - a) * k // (count + 1)
+            if len(picked) < count and all(abs(f - p) >= 30 for p in picked):
+                picked.append(f)
     return sorted(set(picked))
 
 
