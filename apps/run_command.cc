@@ -1,5 +1,4 @@
-// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--no-report]
-// [--report-assets inline|beside]`: runs an
+// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--no-report]`: runs an
 // experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes DIR/results.csv,
 // DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints the Markdown
 // summary. Exits 1 when a run failed, 2 for a bad suite file.
@@ -21,8 +20,8 @@ struct RunOptions {
   std::string out;
   unsigned jobs = 0;
   std::size_t max_runs = 0;
+  std::string report_assets;  // --report-assets inline|beside; empty: as the suite file says
   bool no_report = false;
-  std::string report_assets;  // empty: as the suite file says
 };
 
 void run_suite_command(const RunOptions& o) {

@@ -234,13 +234,14 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
   out << "</head><body>";
   out << "<h1>sightline: suite <code>" << html_escape(suite.name) << "</code></h1>";
   out << markdown_to_html(markdown_summary(suite, outcome));
-  if (!replay_note.empty()) out << "<p class='note'>3D replay left out: " << html_escape(replay_note) << "</p>";
 
   // Colours by solver label, stable across scenes.
   std::map<std::string, std::string> colour;
   for (std::size_t i = 0; i < suite.camera_solvers.size(); ++i) {
     colour[suite.camera_solvers[i].label] = kPalette[i % (sizeof kPalette / sizeof *kPalette)];
   }
+  if (!replay_note.empty()) out << "<p class='note'>3D replay left out: " << html_escape(replay_note) << "</p>";
+
   for (const SuiteScene& scene : suite.scenes) {
     std::vector<LoadedRun> runs;
     // The independent check, boxes and a level's triangles alike (the clearance radius and

@@ -89,11 +89,12 @@ struct Suite {
   std::vector<std::uint64_t> toy_seeds;
   solvers::SolveLimits toy_limits;
 
-  // Report settings: how many frames of each scene are shown from the main camera.
-  int camera_view_frames = 3;
-  // `replay_assets: beside`: the 3D replay's three.js and scene data go to
+  // `report: replay_assets: beside`: the 3D replay's three.js and scene data go to
   // OUT/report-assets/ beside report.html instead of inside it (`inline`, the default).
   bool replay_assets_beside = false;
+
+  // Report settings: how many frames of each scene are shown from the main camera.
+  int camera_view_frames = 3;
 };
 
 // One combination. Indices point into the Suite's lists.

@@ -217,6 +217,33 @@ TEST(SuiteReport, IsSelfContainedWithPicturesOfEveryScene) {
   EXPECT_EQ(top_views, 4u);
   EXPECT_NE(html.find("visible fraction of the body"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir.path("out/report.html.tmp")));
+
+  // Without three.js the report is still written, saying why the replay is left out.
+  ReportOptions no_three;
+  no_three.three_dir = dir.path("no-three");
+  const std::string without = report_html(suite, outcome, dir.path("out"), no_three);
+  EXPECT_NE(without.find("3D replay left out"), std::string::npos);
+  EXPECT_NE(without.find("libjs-three"), std::string::npos);
+  EXPECT_EQ(without.find("<section class='replay'"), std::string::npos);
+  EXPECT_NE(without.find("top view ("), std::string::npos);
+}
+
+TEST(SuiteReport, ReplayAssetsBesideGoToReportAssets) {
+  ScratchDir dir("runner-report-beside");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", kTinySuite));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  ReportOptions beside;
+  beside.replay_assets = ReportOptions::ReplayAssets::kBeside;
+  write_report(suite, outcome, dir.path("out"), beside);
+  const std::string html = read_text(dir.path("out/report.html"));
+  EXPECT_NE(html.find("src='report-assets/three.js'"), std::string::npos);
+  EXPECT_EQ(html.find("class='replay-data'"), std::string::npos);
+  for (const char* scene : {"room", "wall"}) {
+    const std::string file = std::string("report-assets/replay-") + scene + ".js";
+    EXPECT_NE(html.find("data-src='" + file + "'"), std::string::npos) << scene;
+    EXPECT_TRUE(fs::exists(dir.path("out/" + file))) << file;
+  }
+  EXPECT_TRUE(fs::exists(dir.path("out/report-assets/three.js")));
 }
 
 }  // namespace
