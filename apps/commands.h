@@ -21,5 +21,6 @@ void add_scene_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_follow_command(CLI::App& app);
 void add_level_command(CLI::App& app);
+void add_view_command(CLI::App& app);
 
 }  // namespace sightline::apps

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   apps::add_scene_command(app);
   apps::add_follow_command(app);
   apps::add_level_command(app);
+  apps::add_view_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,9 +1,11 @@
 #include "experiments/trace.h"
 
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "csp/input_error.h"
@@ -26,6 +28,43 @@ std::string reason_cell(const std::string& reason) {
     if (c == ',' || c == '"' || c == '\n' || c == '\r') c = '-';
   }
   return cell;
+}
+
+// One CSV cell: its text without surrounding blanks (and a Windows line end), and the
+// 1-based character column where it starts, for messages.
+struct Cell {
+  std::string text;
+  int column = 1;
+};
+
+std::vector<Cell> split_cells(const std::string& line) {
+  std::vector<Cell> cells;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    const std::size_t stop = comma == std::string::npos ? line.size() : comma;
+    std::size_t a = start, b = stop;
+    while (a < b && std::isspace(static_cast<unsigned char>(line[a]))) ++a;
+    while (b > a && std::isspace(static_cast<unsigned char>(line[b - 1]))) --b;
+    cells.push_back({line.substr(a, b - a), static_cast<int>(a + 1)});
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return cells;
+}
+
+std::vector<std::string> split_line(const std::string& line) {
+  std::vector<std::string> names;
+  for (const Cell& c : split_cells(line)) names.push_back(c.text);
+  return names;
+}
+
+// Header names may be quoted ("frame","t",...), as many CSV writers do.
+std::string unquote(const std::string& text) {
+  if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
+    return text.substr(1, text.size() - 2);
+  }
+  return text;
 }
 
 }  // namespace
@@ -60,58 +99,89 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
 }
 
 std::vector<TraceRow> read_trace_csv(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw csp::InputError({path, 0, 0}, "cannot open trace file");
+  const std::vector<std::string> public_columns = split_line(kPublicColumns);
+
   std::string line;
-  if (!std::getline(in, line) || line.rfind(kPublicColumns, 0) != 0) {
-    throw csp::InputError({path, 1, 0}, std::string("expected the trace header '") +
+  if (!std::getline(in, line)) {
+    throw csp::InputError({path, 1, 0}, std::string("empty file: expected the trace header '") +
                                             kPublicColumns + "'");
   }
-  const bool has_extras = line.find(kExtraColumns) != std::string::npos;
-  // The column holding the cut reason, if any (the only cell that is a word, not a number).
-  std::size_t reason_column = std::string::npos;
-  {
-    std::stringstream names(line);
-    std::string name;
-    for (std::size_t i = 0; std::getline(names, name, ','); ++i) {
-      if (!name.empty() && name.back() == '\r') name.pop_back();
-      if (name == kCutReasonColumn && i >= 15) reason_column = i;
+  std::vector<Cell> header = split_cells(line);
+  for (Cell& c : header) c.text = unquote(c.text);
+  for (std::size_t i = 0; i < public_columns.size(); ++i) {
+    if (i >= header.size()) {
+      throw csp::InputError(
+          {path, 1, 0}, "missing column '" + public_columns[i] + "' (column " +
+                            std::to_string(i + 1) + "): the header has " +
+                            std::to_string(header.size()) + " columns; a trace starts with '" +
+                            kPublicColumns + "'");
+    }
+    if (header[i].text != public_columns[i]) {
+      throw csp::InputError({path, 1, header[i].column},
+                            "column " + std::to_string(i + 1) + " is '" + header[i].text +
+                                "', expected '" + public_columns[i] + "' (a trace starts with '" +
+                                kPublicColumns + "')");
     }
   }
+  // This project's extra columns, wherever they are after the public ones; other tools may
+  // add columns of their own (any text), which are not read.
+  const std::vector<std::string> extra_columns = split_line(kExtraColumns);
+  std::vector<std::size_t> extra_at(extra_columns.size(), 0);  // 0: absent
+  for (std::size_t e = 0; e < extra_columns.size(); ++e) {
+    for (std::size_t i = public_columns.size(); i < header.size(); ++i) {
+      if (header[i].text == extra_columns[e]) extra_at[e] = i;
+    }
+  }
+  // The cut reason, if a later column names it (the one extra cell that is a word).
+  std::size_t reason_at = 0;  // 0: absent
+  for (std::size_t i = public_columns.size(); i < header.size(); ++i) {
+    if (header[i].text == kCutReasonColumn) reason_at = i;
+  }
+
   std::vector<TraceRow> rows;
   int line_number = 1;
   while (std::getline(in, line)) {
     ++line_number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    std::vector<double> v;
-    std::string reason;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) {
-      if (v.size() == reason_column) {
-        if (cell.empty()) {
-          throw csp::InputError({path, line_number, 0}, "expected a cut reason, got nothing");
-        }
-        reason = cell;
-        v.push_back(0);  // keeps the column count
-        continue;
-      }
-      char* end = nullptr;
-      const double x = std::strtod(cell.c_str(), &end);
-      if (cell.empty() || *end != '\0') {
-        throw csp::InputError({path, line_number, 0}, "expected a number, got '" + cell + "'");
-      }
-      v.push_back(x);
+    std::vector<Cell> cells = split_cells(line);
+    if (cells.size() == 1 && cells[0].text.empty()) continue;  // a blank line
+    if (cells.size() < header.size()) {
+      throw csp::InputError({path, line_number, 0},
+                            "expected " + std::to_string(header.size()) + " cells as in the "
+                            "header, got " + std::to_string(cells.size()) + ": missing '" +
+                                header[cells.size()].text + "' (column " +
+                                std::to_string(cells.size() + 1) + ")");
     }
-    const std::size_t need =
-        reason_column != std::string::npos ? reason_column + 1 : has_extras ? 19 : 15;
-    if (v.size() < need) {
-      throw csp::InputError({path, line_number, 0}, "expected " + std::to_string(need) +
-                                                        " columns, got " +
-                                                        std::to_string(v.size()));
+    if (cells.size() > header.size()) {
+      throw csp::InputError({path, line_number, cells[header.size()].column},
+                            "expected " + std::to_string(header.size()) +
+                                " cells as in the header, got " + std::to_string(cells.size()));
+    }
+    const auto number = [&](std::size_t i, const std::string& name) {
+      const Cell& c = cells[i];
+      char* end = nullptr;
+      const double x = std::strtod(c.text.c_str(), &end);
+      if (c.text.empty() || *end != '\0') {
+        throw csp::InputError({path, line_number, c.column},
+                              "column '" + name + "': expected a number, got '" + c.text + "'");
+      }
+      if (!std::isfinite(x)) {
+        throw csp::InputError({path, line_number, c.column},
+                              "column '" + name + "': expected a finite number, got '" + c.text +
+                                  "'");
+      }
+      return x;
+    };
+    double v[15];
+    for (std::size_t i = 0; i < public_columns.size(); ++i) v[i] = number(i, public_columns[i]);
+    if (v[0] != std::floor(v[0]) || std::abs(v[0]) > 1e9) {
+      throw csp::InputError({path, line_number, cells[0].column},
+                            "column 'frame': expected a whole number, got '" + cells[0].text +
+                                "'");
     }
     TraceRow r;
+    r.line = line_number;
     r.frame = static_cast<int>(v[0]);
     r.t = v[1];
     r.character = {v[2], v[3], v[4]};
@@ -121,13 +191,18 @@ std::vector<TraceRow> read_trace_csv(const std::string& path) {
     r.cut = v[12] != 0;
     r.cost = v[13];
     r.solve_us = v[14];
-    if (has_extras) {
-      r.controller_visible = v[15] != 0;
-      r.desired_height = v[16];
-      r.desired_distance = v[17];
-      r.desired_orientation = v[18];
+    if (extra_at[0]) r.controller_visible = number(extra_at[0], extra_columns[0]) != 0;
+    if (extra_at[1]) r.desired_height = number(extra_at[1], extra_columns[1]);
+    if (extra_at[2]) r.desired_distance = number(extra_at[2], extra_columns[2]);
+    if (extra_at[3]) r.desired_orientation = number(extra_at[3], extra_columns[3]);
+    if (reason_at) {
+      const Cell& c = cells[reason_at];
+      if (c.text.empty()) {
+        throw csp::InputError({path, line_number, c.column},
+                              "column 'cut_reason': expected a cut reason, got nothing");
+      }
+      r.cut_reason = c.text;
     }
-    r.cut_reason = reason;
     rows.push_back(r);
   }
   return rows;

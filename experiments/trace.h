@@ -34,6 +34,8 @@ struct TraceRow {
   // "visibility-lost", "stuck", "too-fast" (camera_run.cc names them). Empty when the trace
   // does not say (a file without the cut_reason column).
   std::string cut_reason;
+  // The 1-based line this row was read from (read_trace_csv), for messages; 0 otherwise.
+  int line = 0;
 };
 
 // The header line, without a trailing newline.
@@ -41,9 +43,14 @@ std::string trace_header();
 // Writes the trace to `path` atomically enough for resumable suites: to path + ".tmp", then
 // renamed. Throws std::runtime_error naming the path on failure.
 void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows);
-// Reads a trace written by write_trace_csv (or any CSV with at least the fifteen public
-// columns, in order; a later column named cut_reason is read as a word, every other cell
-// must be a number). Throws csp::InputError naming the file and line on malformed input.
+// Reads a trace written by write_trace_csv, or any CSV whose header starts with the fifteen
+// public columns in order (names may be quoted; blanks around cells and Windows line ends are
+// fine). Columns after those may hold anything; this project's extras (visible,
+// desired_height, ...) are read by name wherever they are. Throws csp::InputError naming the
+// file, line and column on malformed input (a column named cut_reason is read as a word): a missing or misnamed public column (which one),
+// a row with fewer or more cells than the header, a cell of a read column that is not a
+// finite number, a frame number that is not whole.
+// Blank lines are skipped.
 std::vector<TraceRow> read_trace_csv(const std::string& path);
 
 }  // namespace sightline::experiments
