@@ -82,6 +82,7 @@ void add_run_command(CLI::App& app) {
   child->add_option("--out", one->out_dir)->required();
   child->add_option("--run", one->run_id)->required();
   child->add_option("--combination", one->combination)->required();
+  child->add_option("--wall-seconds", one->limits.wall_seconds);
   child->add_option("--cpu-seconds", one->limits.cpu_seconds);
   child->add_option("--memory-mb", one->limits.memory_mb);
   child->add_option("--command-line", one->command_line);

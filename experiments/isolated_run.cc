@@ -61,6 +61,9 @@ RunResult run_isolated(const Suite& suite, const SuiteRun& run, const std::strin
   std::vector<std::string> argv = {program,    "run-one",       suite.path,
                                    "--out",    out_dir,         "--run",
                                    run.id,     "--combination", combination_text(run)};
+  if (limits.wall_seconds > 0) {  // enforced here; the child only knows it
+    argv.insert(argv.end(), {"--wall-seconds", number_text(limits.wall_seconds)});
+  }
   if (limits.cpu_seconds > 0) {
     argv.insert(argv.end(), {"--cpu-seconds", number_text(limits.cpu_seconds)});
   }
