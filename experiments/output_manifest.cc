@@ -1,5 +1,7 @@
 #include "experiments/output_manifest.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -36,6 +38,15 @@ std::string one_line(std::string text) {
 
 std::string describe(const std::string& name, const std::string& file, const std::string& hash) {
   return "suite '" + name + "' (" + (file.empty() ? "no file" : file) + ", definition " + hash + ")";
+}
+
+// Anything in the folder but another process's manifest being written.
+bool holds_other_files(const fs::path& out) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(out, ec)) {
+    if (entry.path().filename().string().rfind("manifest", 0) != 0) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -100,7 +111,7 @@ void claim_output_folder(const Suite& suite, const std::vector<SuiteRun>& runs,
           describe(suite.name, suite.path, hash) + " (for instance " + example +
           "): choose another --out, or delete those files");
     }
-  } else if (!fs::is_empty(out, ec)) {
+  } else if (holds_other_files(out)) {
     throw OutputFolderError("output folder '" + out_dir +
                             "' is not empty and holds no suite results (no manifest, no runs/): "
                             "choose a new or empty folder");
@@ -110,7 +121,8 @@ void claim_output_folder(const Suite& suite, const std::vector<SuiteRun>& runs,
   text << "format=" << kFormat << "\nsuite=" << one_line(suite.name)
        << "\nsuite_file=" << one_line(suite.path) << "\ndefinition=" << hash
        << "\nruns=" << runs.size() << '\n';
-  const fs::path tmp = out / "manifest.tmp";
+  // A name of this process's own: several processes (MPI ranks) may claim the folder at once.
+  const fs::path tmp = out / ("manifest.tmp." + std::to_string(::getpid()));
   {
     std::ofstream file(tmp, std::ios::trunc);
     file << text.str();
