@@ -6,6 +6,7 @@
 //
 //   build/bench/suite_runner_bench [--repeats 3]
 #include <CLI/CLI.hpp>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -22,6 +23,18 @@
 
 namespace fs = std::filesystem;
 using namespace sightline::experiments;
+
+// CPU seconds (user + system) of this process and its waited-for children so far.
+double cpu_seconds() {
+  double total = 0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    ::getrusage(who, &u);
+    total += u.ru_utime.tv_sec + u.ru_utime.tv_usec * 1e-6 + u.ru_stime.tv_sec +
+             u.ru_stime.tv_usec * 1e-6;
+  }
+  return total;
+}
 
 int main(int argc, char** argv) {
   int repeats = 3;
@@ -41,14 +54,16 @@ int main(int argc, char** argv) {
   const Suite suite = read_suite_file((dir / "suite.yaml").string());
   const std::size_t runs = expand_runs(suite).size();
 
-  std::printf("| jobs | mode | suite wall s (median of %d) | per run ms | isolation overhead per run ms |\n",
+  std::printf("| jobs | mode | suite wall s (median of %d) | wall per run ms | CPU per run ms |"
+              " isolation wall overhead per run ms |\n",
               repeats);
-  std::printf("|---:|---|---:|---:|---:|\n");
+  std::printf("|---:|---|---:|---:|---:|---:|\n");
   int serial = 0;
   for (unsigned jobs : {1u, 2u}) {
     double in_process = 0;
     for (bool isolated : {false, true}) {
       std::vector<double> seconds;
+      const double cpu_before = cpu_seconds();
       for (int r = 0; r < repeats; ++r) {
         RunnerOptions options;
         options.out_dir = (dir / ("out" + std::to_string(serial++))).string();
@@ -66,17 +81,19 @@ int main(int argc, char** argv) {
         }
         fs::remove_all(options.out_dir);
       }
+      const double cpu_per_run = (cpu_seconds() - cpu_before) / repeats / runs;
       std::sort(seconds.begin(), seconds.end());
       const double median = seconds[seconds.size() / 2];
       if (!isolated) in_process = median;
-      std::printf("| %u | %s | %.3f | %.2f | %s |\n", jobs, isolated ? "isolated" : "in-process",
-                  median, 1000 * median / runs,
+      std::printf("| %u | %s | %.3f | %.2f | %.2f | %s |\n", jobs,
+                  isolated ? "isolated" : "in-process", median, 1000 * median / runs,
+                  1000 * cpu_per_run,
                   isolated ? std::to_string(1000 * (median - in_process) / runs * jobs).substr(0, 5).c_str()
                            : "");
     }
   }
-  std::printf("\n%zu runs per suite; overhead per run = (isolated - in-process) wall / runs x jobs "
-              "(the time a core spends per run on starting and watching its child).\n",
+  std::printf("\n%zu runs per suite; CPU = this process and its children (user + system); wall "
+              "overhead per run = (isolated - in-process) wall / runs x jobs.\n",
               runs);
   fs::remove_all(dir);
   return 0;
