@@ -37,7 +37,7 @@ struct RunResult {
   // "ok"; "skipped" (the solver declared the problem unsuitable); "failed" (an exception,
   // e.g. a file the run needs is unreadable); "wrong" (the run's answer fails its
   // independent check: a toy run's reported cost or hard violation differs from a full
-  // re-evaluation, or it claims feasible while the independent judge counts broken
+  // re-evaluation, or it claims a perfect score while the independent judge counts broken
   // conditions); and for isolated runs "timeout" (wall or CPU limit), "memout" (an
   // allocation refused) or "crash" (a signal, or an exit without a result).
   std::string status;
@@ -91,9 +91,9 @@ bool is_timing_column(const std::string& column);
 bool is_provenance_column(const std::string& column);
 
 // Why a toy run's answer is wrong ("" when its independent check accepts it): `reported`
-// differs from a full re-evaluation of `best` by problem.score (hard exactly up to
-// rounding, soft to a relative 1e-6), or it claims feasible while `broken` (the
-// independent judge's count for `best`, -1 when there is none) is above 0.
+// differs from a full re-evaluation of `best` by problem.score (hard and soft to a relative
+// 1e-6), or it claims a perfect score (feasible, cost 0) while `broken` (the independent
+// judge's count for `best`, -1 when there is none) is above 0.
 std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignment& best,
                                const csp::Score& reported, long long broken);
 

@@ -17,6 +17,7 @@
 #include <map>
 #include <sstream>
 
+#include "csp/kinds/not_equal.h"
 #include "domains/nqueens/nqueens.h"
 #include "experiments/output_manifest.h"
 #include "experiments/suite_runner.h"
@@ -240,6 +241,19 @@ TEST(ToyAnswerCheck, NamesAReportedCostOrFeasibilityThatIsNotTrue) {
   EXPECT_NE(toy_answer_problem(*problem, solution, problem->score(solution), 2), "");
   // The wrong number of values.
   EXPECT_NE(toy_answer_problem(*problem, {1, 3}, csp::Score{}, -1), "");
+
+  // A soft model (a colouring as Max-CSP): an honest cost of one conflict that the judge
+  // also counts is a right answer; claiming cost 0 for it is not.
+  csp::Problem edge("one edge, one colour");
+  edge.add_variable("a", csp::Domain::integer_range(0, 0));
+  edge.add_variable("b", csp::Domain::integer_range(0, 0));
+  edge.add_constraint(std::make_unique<csp::NotEqual>(0, 1));
+  const csp::Assignment same = {0, 0};
+  const csp::Score conflict = edge.score(same);
+  ASSERT_TRUE(conflict.feasible());
+  ASSERT_EQ(conflict.soft, 1);
+  EXPECT_EQ(toy_answer_problem(edge, same, conflict, 1), "");
+  EXPECT_NE(toy_answer_problem(edge, same, csp::Score{0, 0}, 1), "");
 }
 
 // --- Limits in the suite file ---
