@@ -22,6 +22,7 @@
 #include <new>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -45,6 +46,20 @@ void memout_handler() {
   static const char message[] = "sightline: out of memory (an allocation was refused)\n";
   (void)!::write(STDERR_FILENO, message, sizeof message - 1);
   ::_exit(kExitMemout);
+}
+
+// The runner's environment without the variables that tie a process to an MPI job (Open
+// MPI's OMPI_*, PMIx's PMIX_*, PMI_*): inside an MPI rank, a child that inherited them and
+// initialised MPI would present itself to the job as that rank. The child never uses MPI.
+std::vector<char*> child_environment() {
+  std::vector<char*> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string_view v(*e);
+    if (v.rfind("OMPI_", 0) == 0 || v.rfind("PMIX_", 0) == 0 || v.rfind("PMI_", 0) == 0) continue;
+    env.push_back(*e);
+  }
+  env.push_back(nullptr);
+  return env;
 }
 
 }  // namespace
@@ -105,7 +120,8 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   pid_t pid = 0;
-  const int error = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+  const int error =
+      posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), child_environment().data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   ChildOutcome out;

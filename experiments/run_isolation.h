@@ -61,7 +61,9 @@ struct ChildOutcome {
 };
 
 // Starts `argv` (argv[0] is the program path) in a new process group, stdin from /dev/null,
-// stdout and stderr to `log_path`, and waits for it, killing its group at `limits.wall_seconds`.
+// stdout and stderr to `log_path`, this environment without MPI's variables (OMPI_*, PMIX_*,
+// PMI_*: the child is no part of an MPI job), and waits for it, killing its group at
+// `limits.wall_seconds`.
 // The memory and CPU limits are the child's own business (it is given them on its command
 // line); they are used here to name what killed it.
 ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& log_path,

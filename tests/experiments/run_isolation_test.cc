@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <climits>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -83,6 +84,62 @@ std::string comparable(const Suite& suite, const std::string& csv) {
     out += '\n';
   }
   return out;
+}
+
+// --- run_child on plain programs ---
+
+TEST(RunChild, NamesHowAProgramEnded) {
+  ScratchDir dir("run-child");
+  const std::string log = dir.path("child.log");
+  ChildOutcome exited = run_child({"/bin/sh", "-c", "echo hello; exit 3"}, log, {});
+  EXPECT_EQ(exited.how, "exited");
+  EXPECT_EQ(exited.exit_code, 3);
+  EXPECT_EQ(read_text(log), "hello\n");
+
+  ChildOutcome crashed = run_child({"/bin/sh", "-c", "kill -SEGV $$"}, log, {});
+  EXPECT_EQ(crashed.how, "crash");
+  EXPECT_EQ(crashed.signal, SIGSEGV);
+
+  RunLimits wall;
+  wall.wall_seconds = 0.3;
+  // The shell and the sleep it started are one process group: both go at the limit.
+  const std::string pid_file = dir.path("sleep.pid");
+  ChildOutcome slow =
+      run_child({"/bin/sh", "-c", "sleep 30 & echo $! > '" + pid_file + "'; wait"}, log, wall);
+  EXPECT_EQ(slow.how, "timeout");
+  EXPECT_LT(slow.wall_seconds, 10);
+  const std::string sleeper = read_text(pid_file).substr(0, read_text(pid_file).find('\n'));
+  ASSERT_FALSE(sleeper.empty());
+  // Gone, or a zombie waiting for whoever adopted it to reap it: not sleeping on.
+  auto alive = [&] {
+    std::ifstream stat("/proc/" + sleeper + "/stat");
+    std::string pid, name, state;
+    return stat >> pid >> name >> state && state != "Z";
+  };
+  for (int i = 0; i < 100 && alive(); ++i) ::usleep(10000);
+  EXPECT_FALSE(alive()) << "the grandchild " << sleeper << " outlived the timeout";
+
+  ChildOutcome memout =
+      run_child({"/bin/sh", "-c", "exit " + std::to_string(kExitMemout)}, log, {});
+  EXPECT_EQ(memout.how, "memout");
+
+  ChildOutcome missing = run_child({"/no/such/program"}, log, {});
+  EXPECT_EQ(missing.how, "spawn-failed");
+}
+
+TEST(RunChild, LeavesMpiVariablesOutOfTheChildsEnvironment) {
+  ScratchDir dir("run-child-env");
+  ::setenv("OMPI_COMM_WORLD_RANK", "2", 1);
+  ::setenv("PMIX_RANK", "2", 1);
+  ::setenv("SIGHTLINE_KEPT", "yes", 1);
+  run_child({"/usr/bin/env"}, dir.path("env.log"), {});
+  ::unsetenv("OMPI_COMM_WORLD_RANK");
+  ::unsetenv("PMIX_RANK");
+  ::unsetenv("SIGHTLINE_KEPT");
+  const std::string env = read_text(dir.path("env.log"));
+  EXPECT_NE(env.find("SIGHTLINE_KEPT=yes"), std::string::npos) << env;
+  EXPECT_EQ(env.find("OMPI_COMM_WORLD_RANK"), std::string::npos) << env;
+  EXPECT_EQ(env.find("PMIX_RANK"), std::string::npos) << env;
 }
 
 const char* kFaultSuite = R"(name: faults
