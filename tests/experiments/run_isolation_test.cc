@@ -248,6 +248,29 @@ TEST(RunIsolation, IsolatedAndInProcessRunsWriteTheSameResults) {
   }
 }
 
+TEST(RunIsolation, ARunWhoseSuiteFileChangedUnderItFailsWithoutRunningSomethingElse) {
+  ScratchDir dir("isolation-changed");
+  const std::string path = dir.write("suite.yaml", R"(name: c
+problems:
+  instances: [{nqueens: [6]}]
+  solvers: [bnb]
+)");
+  const Suite suite = read_suite_file(path);
+  const SuiteRun run = expand_runs(suite).at(0);
+  fs::create_directories(dir.path("out/runs"));
+  IsolationOptions isolation;
+  isolation.program = SIGHTLINE_BINARY;
+  EXPECT_EQ(run_and_record(suite, run, dir.path("out"), isolation).status, "ok");
+  // The file now says 7-queens: the child finds no run with that id and says so.
+  dir.write("suite.yaml", "name: c\nproblems:\n  instances: [{nqueens: [7]}]\n  solvers: [bnb]\n");
+  const RunResult r = run_and_record(suite, run, dir.path("out"), isolation);
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_NE(r.note.find("suite file changed"), std::string::npos) << r.note;
+  RunResult stored;
+  ASSERT_TRUE(read_run_file(run_file_base(dir.path("out"), run.id) + ".result", stored));
+  EXPECT_EQ(stored.status, "failed");
+}
+
 TEST(RunIsolation, ASuiteWithLimitsRefusesToRunInProcess) {
   ScratchDir dir("isolation-refuse");
   const Suite suite = read_suite_file(dir.write("suite.yaml", kFaultSuite));
