@@ -5,10 +5,10 @@
 // A plain program: it times whole suites. See docs/BENCHMARKS.md.
 //
 //   build/bench/suite_runner_bench [--repeats 3]
-#include <CLI/CLI.hpp>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -43,20 +43,23 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
 
-  const fs::path dir = fs::temp_directory_path() / ("suite-runner-bench-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("suite-runner-bench-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   {
-    std::ofstream(dir / "suite.yaml") << "name: overhead\nproblems:\n"
-                                         "  instances: [{nqueens: [4, 5, 6, 7, 8, 9, 10, 11, 12, 13]}]\n"
-                                         "  solvers: [bnb, sls]\n"
-                                         "  seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n";
+    std::ofstream(dir / "suite.yaml")
+        << "name: overhead\nproblems:\n"
+           "  instances: [{nqueens: [4, 5, 6, 7, 8, 9, 10, 11, 12, 13]}]\n"
+           "  solvers: [bnb, sls]\n"
+           "  seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n";
   }
   const Suite suite = read_suite_file((dir / "suite.yaml").string());
   const std::size_t runs = expand_runs(suite).size();
 
-  std::printf("| jobs | mode | suite wall s (median of %d) | wall per run ms | CPU per run ms |"
-              " isolation wall overhead per run ms |\n",
-              repeats);
+  std::printf(
+      "| jobs | mode | suite wall s (median of %d) | wall per run ms | CPU per run ms |"
+      " isolation wall overhead per run ms |\n",
+      repeats);
   std::printf("|---:|---|---:|---:|---:|---:|\n");
   int serial = 0;
   for (unsigned jobs : {1u, 2u}) {
@@ -85,16 +88,17 @@ int main(int argc, char** argv) {
       std::sort(seconds.begin(), seconds.end());
       const double median = seconds[seconds.size() / 2];
       if (!isolated) in_process = median;
-      std::printf("| %u | %s | %.3f | %.2f | %.2f | %s |\n", jobs,
-                  isolated ? "isolated" : "in-process", median, 1000 * median / runs,
-                  1000 * cpu_per_run,
-                  isolated ? std::to_string(1000 * (median - in_process) / runs * jobs).substr(0, 5).c_str()
-                           : "");
+      std::printf(
+          "| %u | %s | %.3f | %.2f | %.2f | %s |\n", jobs, isolated ? "isolated" : "in-process",
+          median, 1000 * median / runs, 1000 * cpu_per_run,
+          isolated ? std::to_string(1000 * (median - in_process) / runs * jobs).substr(0, 5).c_str()
+                   : "");
     }
   }
-  std::printf("\n%zu runs per suite; CPU = this process and its children (user + system); wall "
-              "overhead per run = (isolated - in-process) wall / runs x jobs.\n",
-              runs);
+  std::printf(
+      "\n%zu runs per suite; CPU = this process and its children (user + system); wall "
+      "overhead per run = (isolated - in-process) wall / runs x jobs.\n",
+      runs);
   fs::remove_all(dir);
   return 0;
 }

@@ -58,9 +58,9 @@ RunResult run_isolated(const Suite& suite, const SuiteRun& run, const std::strin
   const std::string log_path = base + ".log";
   remove_quietly(result_path);  // a stale file must never stand in for this run's result
 
-  std::vector<std::string> argv = {program,    "run-one",       suite.path,
-                                   "--out",    out_dir,         "--run",
-                                   run.id,     "--combination", combination_text(run)};
+  std::vector<std::string> argv = {program, "run-one",       suite.path,
+                                   "--out", out_dir,         "--run",
+                                   run.id,  "--combination", combination_text(run)};
   if (limits.wall_seconds > 0) {  // enforced here; the child only knows it
     argv.insert(argv.end(), {"--wall-seconds", number_text(limits.wall_seconds)});
   }
@@ -126,8 +126,9 @@ int run_one(const RunOneRequest& q) {
   std::getline(parts, kind, '/');
   if (!(parts >> subject >> s1 >> solver >> s2 >> profile >> s3 >> seed) || s1 != '/' ||
       s2 != '/' || s3 != '/' || (kind != "camera" && kind != "toy") || parts.get(s4)) {
-    throw std::runtime_error("run-one: --combination must be KIND/SUBJECT/SOLVER/PROFILE/SEED, got '" +
-                             q.combination + "'");
+    throw std::runtime_error(
+        "run-one: --combination must be KIND/SUBJECT/SOLVER/PROFILE/SEED, got '" + q.combination +
+        "'");
   }
   const SuiteRun::Kind run_kind = kind == "camera" ? SuiteRun::Kind::kCamera : SuiteRun::Kind::kToy;
   const Suite suite = read_suite_file(q.suite_path, SuiteLoadOnly{run_kind, subject});

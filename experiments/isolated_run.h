@@ -32,9 +32,9 @@ struct RunOneRequest {
   std::string suite_path;
   std::string out_dir;
   std::string run_id;
-  std::string combination;  // "camera/SCENE/SOLVER/PROFILE/SEED" or "toy/PROBLEM/SOLVER/0/SEED"
-  RunLimits limits;         // CPU and memory are applied; wall is the runner's
-  std::string command_line; // the runner's, recorded as the result's
+  std::string combination;   // "camera/SCENE/SOLVER/PROFILE/SEED" or "toy/PROBLEM/SOLVER/0/SEED"
+  RunLimits limits;          // CPU and memory are applied; wall is the runner's
+  std::string command_line;  // the runner's, recorded as the result's
 };
 
 // The child: applies the limits and guards, runs and records the run. Returns the process

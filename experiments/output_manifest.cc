@@ -37,7 +37,8 @@ std::string one_line(std::string text) {
 }
 
 std::string describe(const std::string& name, const std::string& file, const std::string& hash) {
-  return "suite '" + name + "' (" + (file.empty() ? "no file" : file) + ", definition " + hash + ")";
+  return "suite '" + name + "' (" + (file.empty() ? "no file" : file) + ", definition " + hash +
+         ")";
 }
 
 // Anything in the folder but another process's manifest being written.
@@ -105,11 +106,11 @@ void claim_output_folder(const Suite& suite, const std::vector<SuiteRun>& runs,
       }
     }
     if (foreign > 0) {
-      throw OutputFolderError(
-          "output folder '" + out_dir + "' has no manifest (an earlier version wrote it) and " +
-          std::to_string(foreign) + " of its run files are not runs of " +
-          describe(suite.name, suite.path, hash) + " (for instance " + example +
-          "): choose another --out, or delete those files");
+      throw OutputFolderError("output folder '" + out_dir +
+                              "' has no manifest (an earlier version wrote it) and " +
+                              std::to_string(foreign) + " of its run files are not runs of " +
+                              describe(suite.name, suite.path, hash) + " (for instance " + example +
+                              "): choose another --out, or delete those files");
     }
   } else if (holds_other_files(out)) {
     throw OutputFolderError("output folder '" + out_dir +

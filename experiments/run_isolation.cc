@@ -1,12 +1,12 @@
 #include "experiments/run_isolation.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <poll.h>
+#include <signal.h>
 #include <spawn.h>
-#include <sys/syscall.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -172,8 +172,9 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
   out.cpu_seconds = seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime);
   out.max_rss_mb = usage.ru_maxrss / 1024.0;
 
-  const bool cpu_spent = limits.cpu_seconds > 0 &&
-                         out.cpu_seconds >= static_cast<double>(cpu_limit_seconds(limits.cpu_seconds));
+  const bool cpu_spent =
+      limits.cpu_seconds > 0 &&
+      out.cpu_seconds >= static_cast<double>(cpu_limit_seconds(limits.cpu_seconds));
   if (wall_timeout) {
     out.how = "timeout";
     out.signal = SIGKILL;
@@ -213,8 +214,8 @@ void apply_limits_to_this_process(const RunLimits& limits) {
     }
     const rlimit value{soft, hard};
     if (::setrlimit(resource, &value) != 0) {
-      throw std::runtime_error(std::string("cannot set the ") + name + " limit: " +
-                               std::strerror(errno));
+      throw std::runtime_error(std::string("cannot set the ") + name +
+                               " limit: " + std::strerror(errno));
     }
   };
   if (limits.cpu_seconds > 0) {

@@ -44,8 +44,8 @@ struct RunLimits {
 constexpr std::uint64_t kMinimumMemoryMb = 256;
 
 // Exit codes of a run-one child besides 0 (recorded), 1 and 2 (main's own).
-constexpr int kExitMemout = 86;          // an allocation failed (the memory limit)
-constexpr int kExitSuiteChanged = 87;    // the run is not in the suite file any more
+constexpr int kExitMemout = 86;        // an allocation failed (the memory limit)
+constexpr int kExitSuiteChanged = 87;  // the run is not in the suite file any more
 
 // How an isolated child ended, as seen by the parent.
 struct ChildOutcome {

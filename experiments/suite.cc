@@ -170,17 +170,17 @@ RunLimits read_limits(const Spec& spec, RunLimits limits) {
   spec.check_keys({"wall_seconds", "cpu_seconds", "memory_mb"});
   for (const char* key : {"wall_seconds", "cpu_seconds"}) {
     if (const Spec* v = spec.find(key)) {
-      const std::string what = std::string("a ") + (key[0] == 'w' ? "wall" : "CPU") +
-                               " time limit in seconds > 0";
+      const std::string what =
+          std::string("a ") + (key[0] == 'w' ? "wall" : "CPU") + " time limit in seconds > 0";
       const double seconds = v->as_number(what);
       if (!(seconds > 0)) v->fail("expected " + what + ", got " + v->preview());
       (key[0] == 'w' ? limits.wall_seconds : limits.cpu_seconds) = seconds;
     }
   }
   if (const Spec* v = spec.find("memory_mb")) {
-    const std::string what = "a memory limit in MB, an integer >= " +
-                             std::to_string(kMinimumMemoryMb) +
-                             " (the program needs that much to start)";
+    const std::string what =
+        "a memory limit in MB, an integer >= " + std::to_string(kMinimumMemoryMb) +
+        " (the program needs that much to start)";
     const long long mb = v->as_integer(what);
     if (mb < static_cast<long long>(kMinimumMemoryMb)) {
       v->fail("expected " + what + ", got " + v->preview());
@@ -203,7 +203,8 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
       if (!paths.insert(path).second) continue;  // two patterns naming one file: once
       SuiteScene s;
       s.path = path;
-      if (only && !(only->kind == SuiteRun::Kind::kCamera && only->subject == suite.scenes.size())) {
+      if (only &&
+          !(only->kind == SuiteRun::Kind::kCamera && only->subject == suite.scenes.size())) {
         suite.scenes.push_back(std::move(s));  // not this child's scene: not loaded
         continue;
       }
@@ -252,8 +253,7 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
     SuiteCameraSolver s;
     s.where = entry.where();
     if (entry.is_map()) {
-      entry.check_keys(
-          {"solver", "label", "options", "controller", "area_adaptation", "limits"});
+      entry.check_keys({"solver", "label", "options", "controller", "area_adaptation", "limits"});
       s.options.solver = entry.at("solver").as_string("a solver, pipeline or controller name");
       s.options.solver_options = read_options(entry.find("options"));
       if (const Spec* c = entry.find("controller")) read_controller(*c, s.options);
@@ -264,12 +264,12 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
       s.label = s.options.solver;
     }
     s.limits = suite.limits;
-    if (entry.is_map() && entry.find("limits")) s.limits = read_limits(entry.at("limits"), s.limits);
+    if (entry.is_map() && entry.find("limits"))
+      s.limits = read_limits(entry.at("limits"), s.limits);
     if (!only) {
       try {
         const SuiteScene& first = suite.scenes.front();
-        camera::make_controller(s.options.solver, *first.scene, first.scene->profile(),
-                                s.options);
+        camera::make_controller(s.options.solver, *first.scene, first.scene->profile(), s.options);
       } catch (const csp::InputError&) {
         throw;
       } catch (const std::exception& e) {
@@ -434,7 +434,8 @@ Suite parse_suite(const csp::Spec& document, const std::string& base_dir,
     for (const auto& s : suite.toy_solvers) limited = limited || s.limits.any();
     if (limited) {
       csp::SourceLocation where = suite.isolation_where;
-      throw csp::InputError(where, "limits need isolated runs: drop `isolation: false` or the limits");
+      throw csp::InputError(where,
+                            "limits need isolated runs: drop `isolation: false` or the limits");
     }
   }
   if (const Spec* r = document.find("report")) {
@@ -491,8 +492,8 @@ SuiteRun combination(const Suite& suite, SuiteRun::Kind kind, std::size_t subjec
     run.definition = "toy;" + problem_text + ";" + suite.toy_solvers[solver].definition + ";" +
                      toy_limits.str() + ";seed=" + std::to_string(seed);
     limits = &suite.toy_solvers[solver].limits;
-    run.id = file_safe(p.label + "__" + suite.toy_solvers[solver].label + "__s" +
-                       std::to_string(seed));
+    run.id =
+        file_safe(p.label + "__" + suite.toy_solvers[solver].label + "__s" + std::to_string(seed));
   }
   // Run limits change what a run may report (a timeout at 60 s may finish in 120 s), so
   // they are part of the definition; only when set, so the ids of suites without limits
@@ -535,8 +536,8 @@ std::vector<SuiteRun> expand_runs(const Suite& suite) {
   return runs;
 }
 
-SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject,
-                  std::size_t solver, std::size_t profile, std::uint64_t seed) {
+SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject, std::size_t solver,
+                  std::size_t profile, std::uint64_t seed) {
   return combination(suite, kind, subject, solver, profile, seed,
                      subject_hash(suite, kind, subject));
 }

@@ -134,8 +134,8 @@ Suite parse_suite(const csp::Spec& document, const std::string& base_dir,
 // runs (problem, solver, seed): the order of results.csv.
 std::vector<SuiteRun> expand_runs(const Suite& suite);
 // One combination, as expand_runs makes it (profile is ignored for toy runs).
-SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject,
-                  std::size_t solver, std::size_t profile, std::uint64_t seed);
+SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject, std::size_t solver,
+                  std::size_t profile, std::uint64_t seed);
 
 // The limits a run is held to: its solver entry's.
 const RunLimits& run_limits(const Suite& suite, const SuiteRun& run);

@@ -2,9 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/asio/post.hpp>
 #include <boost/asio/thread_pool.hpp>
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -149,19 +149,19 @@ void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
   const long long broken =
       loaded.count_broken ? static_cast<long long>(loaded.count_broken(result.best)) : -1;
   const std::size_t first = suite.scenes.empty() ? 0 : metric_names().size();
-  const std::vector<std::string> values = {
-      number_text(result.score.soft),
-      number_text(static_cast<double>(result.score.hard)),
-      result.feasible() ? "1" : "0",
-      number_text(result.wall_seconds),
-      std::to_string(result.evaluations),
-      std::to_string(result.iterations),
-      std::string(solvers::to_string(result.stop)),
-      broken >= 0 ? std::to_string(broken) : std::string()};
+  const std::vector<std::string> values = {number_text(result.score.soft),
+                                           number_text(static_cast<double>(result.score.hard)),
+                                           result.feasible() ? "1" : "0",
+                                           number_text(result.wall_seconds),
+                                           std::to_string(result.evaluations),
+                                           std::to_string(result.iterations),
+                                           std::string(solvers::to_string(result.stop)),
+                                           broken >= 0 ? std::to_string(broken) : std::string()};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
-  if (const std::string why = toy_answer_problem(*loaded.problem, result.best, result.score, broken);
+  if (const std::string why =
+          toy_answer_problem(*loaded.problem, result.best, result.score, broken);
       !why.empty()) {
     r.status = "wrong";
     r.note = why;
@@ -248,8 +248,8 @@ bool is_provenance_column(const std::string& column) {
 std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignment& best,
                                const csp::Score& reported, long long broken) {
   if (best.size() != problem.num_variables()) {
-    return "wrong answer: the assignment has " + std::to_string(best.size()) +
-           " values for " + std::to_string(problem.num_variables()) + " variables";
+    return "wrong answer: the assignment has " + std::to_string(best.size()) + " values for " +
+           std::to_string(problem.num_variables()) + " variables";
   }
   const csp::Score actual = problem.score(best);
   auto differs = [](double a, double b) {

@@ -42,15 +42,15 @@ struct RunResult {
   // allocation refused) or "crash" (a signal, or an exit without a result).
   std::string status;
   std::vector<std::string> values;  // metric values as text ("" where not applicable)
-  std::string note;     // why skipped, failed, wrong, ...; the definition is kept in the run file
+  std::string note;  // why skipped, failed, wrong, ...; the definition is kept in the run file
   std::string definition;
   Provenance provenance;  // who made the result: host, CPU, build commit, command line
 };
 
 // Whether runs execute in child processes (isolated_run.h).
 struct IsolationOptions {
-  std::optional<bool> isolated;             // unset: the suite's `isolation:` (default true)
-  std::string program = "/proc/self/exe";   // the sightline program a child runs
+  std::optional<bool> isolated;            // unset: the suite's `isolation:` (default true)
+  std::string program = "/proc/self/exe";  // the sightline program a child runs
 };
 
 struct RunnerOptions {

@@ -63,7 +63,8 @@ TEST(RunCommand, RecordsACrashAHangAndAMemoryBlowUpWhileTheRestFinish) {
   const Outcome run = test::run("run '" + suite + "' --out '" + dir.path("out") + "' --no-report");
   ::unsetenv("SIGHTLINE_TEST_FAULT");
   EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_TRUE(contains(run.output, "3 run(s) ended in timeout, memout, crash or wrong")) << run.output;
+  EXPECT_TRUE(contains(run.output, "3 run(s) ended in timeout, memout, crash or wrong"))
+      << run.output;
   std::map<std::string, std::string> status;
   for (const auto& row : read_rows(dir.path("out/results.csv"))) {
     status[row.at("problem") + " " + row.at("solver")] = row.at("status");
@@ -118,10 +119,12 @@ problems:
 
 TEST(RunCommand, RefusesAFolderHoldingAnotherSuitesResults) {
   ScratchDir dir("cli-manifest");
-  const std::string first = dir.write("first.yaml", "name: first\nproblems:\n"
-                                                    "  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n");
-  const std::string second = dir.write("second.yaml", "name: second\nproblems:\n"
-                                                      "  instances: [{nqueens: [6]}]\n  solvers: [bnb]\n");
+  const std::string first = dir.write("first.yaml",
+                                      "name: first\nproblems:\n"
+                                      "  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n");
+  const std::string second = dir.write("second.yaml",
+                                       "name: second\nproblems:\n"
+                                       "  instances: [{nqueens: [6]}]\n  solvers: [bnb]\n");
   const std::string out = dir.path("out");
   ASSERT_EQ(test::run("run '" + first + "' --out '" + out + "' --no-report").status, 0);
   const Outcome refused = test::run("run '" + second + "' --out '" + out + "' --no-report");
@@ -134,8 +137,9 @@ TEST(RunCommand, RefusesAFolderHoldingAnotherSuitesResults) {
 
 TEST(RunCommand, RefusesAnOutputFolderItCannotCreate) {
   ScratchDir dir("cli-unwritable");
-  const std::string suite = dir.write("suite.yaml", "name: s\nproblems:\n"
-                                                    "  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n");
+  const std::string suite = dir.write("suite.yaml",
+                                      "name: s\nproblems:\n"
+                                      "  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n");
   dir.write("a-file", "not a folder");
   // Under a regular file no folder can be made, even by root.
   const std::string out = dir.path("a-file/out");
@@ -148,9 +152,8 @@ TEST(RunCommand, RefusesAnOutputFolderItCannotCreate) {
 TEST(RunCommand, NamesTheLineOfLimitsThatMakeNoSense) {
   ScratchDir dir("cli-limits");
   const std::string head = "name: s\nproblems:\n  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n";
-  for (const std::string limits :
-       {"limits: {wall_seconds: -1}", "limits: {cpu_seconds: .nan}", "limits: {memory_mb: 1}",
-        "limits: {wall_seconds: ten}"}) {
+  for (const std::string limits : {"limits: {wall_seconds: -1}", "limits: {cpu_seconds: .nan}",
+                                   "limits: {memory_mb: 1}", "limits: {wall_seconds: ten}"}) {
     const std::string suite = dir.write("suite.yaml", head + limits + "\n");
     const Outcome refused = test::run("run '" + suite + "' --out '" + dir.path("out") + "'");
     EXPECT_EQ(refused.status, 2) << limits << ": " << refused.output;

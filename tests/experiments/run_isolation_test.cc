@@ -5,8 +5,6 @@
 //
 // The misbehaving runs are real runs of the real program (SIGHTLINE_BINARY) made to
 // misbehave by its documented test hook, SIGHTLINE_TEST_FAULT (run_isolation.h).
-#include "experiments/isolated_run.h"
-
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -20,6 +18,7 @@
 
 #include "csp/kinds/not_equal.h"
 #include "domains/nqueens/nqueens.h"
+#include "experiments/isolated_run.h"
 #include "experiments/output_manifest.h"
 #include "experiments/suite_runner.h"
 #include "tests/experiments/suite_test_files.h"
@@ -242,8 +241,8 @@ TEST(RunIsolation, IsolatedAndInProcessRunsWriteTheSameResults) {
     const std::string here_trace =
         without_solve_us(read_text(run_file_base(dir.path("here"), run.id) + ".trace.csv"));
     EXPECT_GT(here_trace.size(), 1000u);
-    EXPECT_TRUE(here_trace == without_solve_us(read_text(
-                                  run_file_base(dir.path("child"), run.id) + ".trace.csv")))
+    EXPECT_TRUE(here_trace == without_solve_us(read_text(run_file_base(dir.path("child"), run.id) +
+                                                         ".trace.csv")))
         << run.id;
   }
 }
@@ -392,7 +391,8 @@ TEST(SuiteLimits, LimitsArePartOfARunsDefinitionOnlyWhenSet) {
 
 // --- The output folder's manifest ---
 
-const char* kSuiteA = "name: alpha\nproblems:\n  instances: [{nqueens: [5, 6]}]\n  solvers: [bnb]\n";
+const char* kSuiteA =
+    "name: alpha\nproblems:\n  instances: [{nqueens: [5, 6]}]\n  solvers: [bnb]\n";
 const char* kSuiteB = "name: beta\nproblems:\n  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n";
 
 std::string folder_error(const Suite& suite, const std::string& out) {
@@ -411,15 +411,16 @@ TEST(OutputManifest, RefusesAFolderHoldingAnotherSuitesResults) {
   run_suite(a, isolated_options(dir.path("out")));
   const std::string manifest = read_text(dir.path("out/manifest"));
   EXPECT_NE(manifest.find("suite=alpha\n"), std::string::npos) << manifest;
-  EXPECT_NE(manifest.find("definition=" + suite_definition_hash(expand_runs(a))), std::string::npos);
+  EXPECT_NE(manifest.find("definition=" + suite_definition_hash(expand_runs(a))),
+            std::string::npos);
   const std::string error = folder_error(b, dir.path("out"));
   EXPECT_NE(error.find(dir.path("out")), std::string::npos) << error;
   EXPECT_NE(error.find("'alpha'"), std::string::npos) << error;
   EXPECT_NE(error.find("'beta'"), std::string::npos) << error;
   EXPECT_EQ(read_text(dir.path("out/manifest")), manifest);  // untouched
   // The same suite edited (a size dropped) is still its own folder: nothing is redone.
-  const Suite a_less = read_suite_file(
-      dir.write("a2.yaml", "name: alpha\nproblems:\n  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n"));
+  const Suite a_less = read_suite_file(dir.write(
+      "a2.yaml", "name: alpha\nproblems:\n  instances: [{nqueens: [5]}]\n  solvers: [bnb]\n"));
   EXPECT_EQ(folder_error(a_less, dir.path("out")), "");
   EXPECT_EQ(read_suite_state(a_less, dir.path("out")).reused, 1u);
 }
