@@ -15,9 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string number_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+std::string number_text(double v, int digits = 17) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
   return buffer;
 }
 
@@ -78,15 +78,24 @@ RunResult run_isolated(const Suite& suite, const SuiteRun& run, const std::strin
     std::error_code ec;
     return fs::file_size(log_path, ec) == 0 || ec;
   }();
+  auto with_resources = [&](RunResult r) {
+    r.run_wall_s = number_text(child.wall_seconds, 4);
+    r.run_cpu_s = number_text(child.cpu_seconds, 4);
+    r.run_max_rss_mb = number_text(child.max_rss_mb, 4);
+    return r;
+  };
   RunResult stored;
   if (child.how == "exited" && child.exit_code == 0 && read_run_file(result_path, stored) &&
       stored.definition == run.definition) {
     if (log_empty) remove_quietly(log_path);
-    return restore_result(suite, run, stored);
+    // The child could not know what it used: the runner adds it to its file.
+    RunResult r = with_resources(restore_result(suite, run, stored));
+    write_run_file(suite, r, result_path);
+    return r;
   }
 
   // The child left no result: the runner writes one, with what it saw.
-  RunResult r = restore_result(suite, run, RunResult{});
+  RunResult r = with_resources(restore_result(suite, run, RunResult{}));
   r.provenance = this_process_provenance();
   const std::string said = last_log_line(log_path);
   if (child.how != "exited") {

@@ -75,6 +75,10 @@ std::string run_file_text(const Suite& suite, const RunResult& r) {
       << "\ncpu_model=" << one_line(r.provenance.cpu_model)
       << "\nbuild_commit=" << one_line(r.provenance.build_commit)
       << "\ncommand_line=" << one_line(r.provenance.command_line) << '\n';
+  if (!r.run_wall_s.empty()) {
+    out << "run_wall_s=" << r.run_wall_s << "\nrun_cpu_s=" << r.run_cpu_s
+        << "\nrun_max_rss_mb=" << r.run_max_rss_mb << '\n';
+  }
   const std::vector<std::string> columns = metric_columns(suite);
   for (std::size_t i = 0; i < columns.size() && i < r.values.size(); ++i) {
     if (!r.values[i].empty()) out << "metric." << columns[i] << '=' << r.values[i] << '\n';
@@ -236,7 +240,10 @@ std::vector<std::string> result_columns(const Suite& suite) {
                                       "solver", "profile", "seed", "status"};
   for (const std::string& m : metric_columns(suite)) columns.push_back(m);
   columns.push_back("note");
-  for (const char* p : {"host", "cpu_model", "build_commit", "command_line"}) columns.push_back(p);
+  for (const char* p : {"host", "cpu_model", "build_commit", "command_line", "run_wall_s",
+                        "run_cpu_s", "run_max_rss_mb"}) {
+    columns.push_back(p);
+  }
   return columns;
 }
 
@@ -271,7 +278,8 @@ std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignmen
 
 bool is_timing_column(const std::string& column) {
   return column == "solve_us_p50" || column == "solve_us_p99" || column == "solve_us_max" ||
-         column == "time_s";
+         column == "time_s" || column == "run_wall_s" || column == "run_cpu_s" ||
+         column == "run_max_rss_mb";
 }
 
 RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path) {
@@ -316,6 +324,9 @@ bool read_run_file(const std::string& path, RunResult& r) {
   r.definition = fields["definition"];
   r.provenance = {fields["host"], fields["cpu_model"], fields["build_commit"],
                   fields["command_line"]};
+  r.run_wall_s = fields["run_wall_s"];
+  r.run_cpu_s = fields["run_cpu_s"];
+  r.run_max_rss_mb = fields["run_max_rss_mb"];
   try {
     r.seed = std::stoull(fields["seed"]);
   } catch (const std::exception&) {
@@ -374,6 +385,9 @@ RunResult restore_result(const Suite& suite, const SuiteRun& run, const RunResul
   r.status = stored.status;
   r.note = stored.note;
   r.provenance = stored.provenance;
+  r.run_wall_s = stored.run_wall_s;
+  r.run_cpu_s = stored.run_cpu_s;
+  r.run_max_rss_mb = stored.run_max_rss_mb;
   for (const std::string& kv : stored.values) {
     const std::size_t eq = kv.find('=');
     for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -433,7 +447,8 @@ SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
     for (const std::string& v : r.values) csv << ',' << csv_field(v);
     csv << ',' << csv_field(r.note);
     for (const std::string* p : {&r.provenance.host, &r.provenance.cpu_model,
-                                 &r.provenance.build_commit, &r.provenance.command_line}) {
+                                 &r.provenance.build_commit, &r.provenance.command_line,
+                                 &r.run_wall_s, &r.run_cpu_s, &r.run_max_rss_mb}) {
       csv << ',' << csv_field(*p);
     }
     csv << '\n';

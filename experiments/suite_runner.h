@@ -45,6 +45,10 @@ struct RunResult {
   std::string note;  // why skipped, failed, wrong, ...; the definition is kept in the run file
   std::string definition;
   Provenance provenance;  // who made the result: host, CPU, build commit, command line
+  // What an isolated run's process used, as the kernel counted it (wait4): its wall time,
+  // CPU time (user + system, with what it started and waited for) and peak resident memory.
+  // "" for in-process runs.
+  std::string run_wall_s, run_cpu_s, run_max_rss_mb;
 };
 
 // Whether runs execute in child processes (isolated_run.h).
@@ -83,9 +87,10 @@ double metric_value(const std::vector<std::string>& columns, const RunResult& r,
                     const std::string& name);
 // All results.csv columns: id, kind, scene (or problem), solver, profile, seed, status,
 // the metric columns, note, then the provenance columns host, cpu_model, build_commit,
-// command_line.
+// command_line, then an isolated run's resources run_wall_s, run_cpu_s, run_max_rss_mb.
 std::vector<std::string> result_columns(const Suite& suite);
-// Names of the timing columns (they differ between repeats of the same run).
+// Names of the timing columns (they differ between repeats of the same run), including
+// the resource columns run_wall_s, run_cpu_s and run_max_rss_mb.
 bool is_timing_column(const std::string& column);
 // Names of the provenance columns (they differ between machines, builds and invocations).
 bool is_provenance_column(const std::string& column);

@@ -196,6 +196,11 @@ problems:
   EXPECT_NE(runs["6-queens sls"].note.find("CPU time limit of 1 s"), std::string::npos)
       << runs["6-queens sls"].note;
   EXPECT_EQ(runs["6-queens bnb"].status, "ok");
+  // What the kernel counted: the spinning run used its second of CPU, the other little.
+  EXPECT_GE(std::stod(runs["6-queens sls"].run_cpu_s), 0.99);
+  EXPECT_LT(std::stod(runs["6-queens bnb"].run_cpu_s), 0.9);
+  EXPECT_GT(std::stod(runs["6-queens bnb"].run_max_rss_mb), 1);
+  EXPECT_GT(std::stod(runs["6-queens bnb"].run_wall_s), 0);
 }
 
 // 2 scenes x 2 camera solvers, plus 2 toy problems x 2 solvers.
@@ -221,7 +226,11 @@ TEST(RunIsolation, IsolatedAndInProcessRunsWriteTheSameResults) {
   const SuiteOutcome there = run_suite(suite, isolated_options(dir.path("child")));
   ASSERT_EQ(here.results.size(), 10u);
   ASSERT_EQ(there.results.size(), 10u);
-  for (const RunResult& r : there.results) EXPECT_EQ(r.status, "ok") << r.id << ": " << r.note;
+  for (const RunResult& r : there.results) {
+    EXPECT_EQ(r.status, "ok") << r.id << ": " << r.note;
+    EXPECT_FALSE(r.run_cpu_s.empty()) << r.id;  // measured for isolated runs only
+  }
+  for (const RunResult& r : here.results) EXPECT_TRUE(r.run_cpu_s.empty()) << r.id;
   const std::string a = read_text(dir.path("here/results.csv"));
   const std::string b = read_text(dir.path("child/results.csv"));
   EXPECT_EQ(comparable(suite, a), comparable(suite, b));
@@ -298,7 +307,9 @@ problems:
   EXPECT_EQ(p.command_line.find("run-one"), std::string::npos);
   const std::string csv = read_text(dir.path("out/results.csv"));
   const std::string header = csv.substr(0, csv.find('\n'));
-  EXPECT_NE(header.find(",note,host,cpu_model,build_commit,command_line"), std::string::npos)
+  EXPECT_NE(header.find(",note,host,cpu_model,build_commit,command_line,run_wall_s,run_cpu_s,"
+                        "run_max_rss_mb"),
+            std::string::npos)
       << header;
   EXPECT_NE(csv.find(p.build_commit), std::string::npos);
   EXPECT_EQ(shell_command_line({"a b", "it's", "plain"}), "'a b' 'it'\\''s' plain");
