@@ -2,7 +2,9 @@
 //
 // Runs are independent, so they go to a Boost.Asio thread_pool, one per core (or --jobs).
 // Each run executes in a child process of its own by default (isolated_run.h), under the
-// suite's limits, so a crash, a hang or a memory blow-up loses that run only.
+// suite's limits, so a crash, a hang or a memory blow-up loses that run only (its output,
+// if any, is kept in OUT/runs/<id>.log). OUT/manifest names the suite a folder belongs to
+// (output_manifest.h).
 // Each finished run leaves two files in OUT/runs/: its trace (camera runs; FORMATS.md) and a
 // one-row result file, both written to a ".tmp" name first and renamed, the result last. A
 // run counts as finished only when its result file exists, parses, and names the same
