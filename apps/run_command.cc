@@ -1,9 +1,15 @@
-// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--compare A,B] [--no-report]`:
-// runs an experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, and writes
-// DIR/results.csv, DIR/summary.md, DIR/report.html and per-run traces under DIR/runs/. Prints
-// the Markdown summary. Exits 1 when a run failed, 2 for a bad suite file.
+// `sightline run SUITE.yaml --out DIR [--jobs N] [--max-runs K] [--compare A,B] [--no-report]
+// [--report-assets inline|beside] [--in-process]`:
+// runs an experiment suite (docs/EXPERIMENTS.md) in parallel, resumably, each run isolated
+// in a child process by default, and writes DIR/results.csv, DIR/summary.md,
+// DIR/report.html and per-run traces under DIR/runs/. Prints the Markdown summary. Exits 1
+// when a run failed, 2 for a bad suite file or an output folder it may not use.
+//
+// `sightline run-one ...` (hidden) is the child an isolated run starts
+// (experiments/isolated_run.h); people do not type it.
 // Started by mpirun with more than one process, the ranks share the suite instead
 // (experiments/mpi_engine.h, docs/CLUSTER.md): rank 0 prints and writes the report.
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -13,6 +19,7 @@
 #include "apps/commands.h"
 #include "apps/solve_options.h"
 #include "experiments/mpi_engine.h"
+#include "experiments/isolated_run.h"
 #include "experiments/report.h"
 #include "experiments/suite.h"
 #include "experiments/suite_ranking.h"
@@ -29,6 +36,7 @@ struct RunOptions {
   std::string report_assets;  // --report-assets inline|beside; empty: as the suite file says
   bool no_report = false;
   std::vector<std::string> compare;  // "A,B" pairs for the Wilcoxon test
+  bool in_process = false;
 };
 
 void run_suite_command(const RunOptions& o) {
@@ -40,6 +48,7 @@ void run_suite_command(const RunOptions& o) {
     experiments::MpiRunnerOptions mpi;
     mpi.out_dir = o.out;
     mpi.max_new_runs = o.max_runs;
+    if (o.in_process) mpi.isolation.isolated = false;
     std::optional<experiments::SuiteOutcome> on_rank_0 = experiments::run_suite_mpi(suite, mpi);
     if (!on_rank_0) return;  // a worker rank: rank 0 reports
     outcome = std::move(*on_rank_0);
@@ -48,6 +57,7 @@ void run_suite_command(const RunOptions& o) {
     runner.out_dir = o.out;
     runner.jobs = o.jobs;
     runner.max_new_runs = o.max_runs;
+    if (o.in_process) runner.isolation.isolated = false;
     outcome = experiments::run_suite(suite, runner);
   }
   std::cout << experiments::markdown_summary(suite, outcome);
@@ -57,6 +67,10 @@ void run_suite_command(const RunOptions& o) {
   if (!o.no_report) experiments::write_report(suite, outcome, o.out, report);
   std::cout << "Results: " << o.out << "/results.csv" << (o.no_report ? "" : ", report: " + o.out + "/report.html")
             << "\n";
+  if (outcome.not_ok > 0) {
+    std::cout << outcome.not_ok
+              << " run(s) ended in timeout, memout, crash or wrong; see the status column\n";
+  }
   if (outcome.failed > 0) {
     throw RunFailed(std::to_string(outcome.failed) + " run(s) failed; see the note column of " +
                     o.out + "/results.csv");
@@ -88,7 +102,28 @@ void add_run_command(CLI::App& app) {
                   "the 3D replay's three.js and scene data: inline (one file) or beside "
                   "(DIR/report-assets/); default: the suite's report: replay_assets")
       ->check(CLI::IsMember({"inline", "beside"}));
+  cmd->add_flag("--in-process", options->in_process,
+                "run each combination in this process, not in a child of its own (no "
+                "isolation and no limits; the suite's `isolation: false` does the same)");
   cmd->callback([options] { run_suite_command(*options); });
+
+  // The child of an isolated run. Hidden: the runner builds its command line.
+  auto one = std::make_shared<experiments::RunOneRequest>();
+  CLI::App* child = app.add_subcommand("run-one", "run one combination of a suite (internal)");
+  child->group("");
+  child->add_option("suite", one->suite_path)->required();
+  child->add_option("--out", one->out_dir)->required();
+  child->add_option("--run", one->run_id)->required();
+  child->add_option("--combination", one->combination)->required();
+  child->add_option("--wall-seconds", one->limits.wall_seconds);
+  child->add_option("--cpu-seconds", one->limits.cpu_seconds);
+  child->add_option("--memory-mb", one->limits.memory_mb);
+  child->add_option("--command-line", one->command_line);
+  child->callback([one] {
+    const int status = experiments::run_one(*one);
+    std::cout.flush();
+    if (status != 0) std::exit(status);
+  });
 }
 
 }  // namespace sightline::apps

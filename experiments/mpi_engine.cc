@@ -246,7 +246,7 @@ std::size_t abort_after_runs(int rank) {
 
 // A worker rank: asks for runs until told to stop, recording each with run_and_record.
 void work(const Suite& suite, const std::vector<SuiteRun>& runs, const std::string& out_dir,
-          int rank) {
+          const IsolationOptions& isolation, int rank) {
   const std::size_t abort_after = abort_after_runs(rank);
   std::size_t recorded = 0;
   std::string message = "ready";
@@ -257,7 +257,7 @@ void work(const Suite& suite, const std::vector<SuiteRun>& runs, const std::stri
     if (index < 0 || static_cast<std::size_t>(index) >= runs.size()) return;
     const SuiteRun& run = runs[static_cast<std::size_t>(index)];
     try {
-      run_and_record(suite, run, out_dir);
+      run_and_record(suite, run, out_dir, isolation);
       ++recorded;
       if (recorded == abort_after) std::abort();  // the test hook: a rank that dies
       message = "done " + std::to_string(index);
@@ -308,7 +308,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
         "same suite, scene and problem files?");
   }
   if (!dispatcher) {
-    work(suite, runs, options.out_dir, mpi.rank());
+    work(suite, runs, options.out_dir, options.isolation, mpi.rank());
     return std::nullopt;
   }
 
@@ -322,7 +322,7 @@ std::optional<SuiteOutcome> run_suite_mpi(const Suite& suite, const MpiRunnerOpt
   if (mpi.size() == 1) {  // no workers: rank 0 runs everything itself
     for (const std::size_t i : order) {
       try {
-        run_and_record(suite, state.runs[i], options.out_dir);
+        run_and_record(suite, state.runs[i], options.out_dir, options.isolation);
       } catch (const std::exception& e) {
         write_error = e.what();
         break;

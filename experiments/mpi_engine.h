@@ -49,6 +49,7 @@ struct MpiRunnerOptions {
   std::string out_dir;
   std::size_t max_new_runs = 0;  // > 0: hand out at most this many unfinished runs
   bool progress = true;          // rank 0's progress on stderr
+  IsolationOptions isolation;    // each run in a child of its own (default), as locally
 };
 
 // The folder once a job's runs are in: read_suite_state, read again once a second for up to

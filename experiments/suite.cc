@@ -163,7 +163,36 @@ std::string controller_text(const camera::ChaseCameraOptions& o) {
   return out.str();
 }
 
-void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& suite) {
+// `limits: {wall_seconds: S, cpu_seconds: S, memory_mb: M}`, each optional, over `limits`.
+RunLimits read_limits(const Spec& spec, RunLimits limits) {
+  if (!spec.is_map()) {
+    spec.fail("expected limits: a mapping {wall_seconds: S, cpu_seconds: S, memory_mb: MB}");
+  }
+  spec.check_keys({"wall_seconds", "cpu_seconds", "memory_mb"});
+  for (const char* key : {"wall_seconds", "cpu_seconds"}) {
+    if (const Spec* v = spec.find(key)) {
+      const std::string what =
+          std::string("a ") + (key[0] == 'w' ? "wall" : "CPU") + " time limit in seconds > 0";
+      const double seconds = v->as_number(what);
+      if (!(seconds > 0)) v->fail("expected " + what + ", got " + v->preview());
+      (key[0] == 'w' ? limits.wall_seconds : limits.cpu_seconds) = seconds;
+    }
+  }
+  if (const Spec* v = spec.find("memory_mb")) {
+    const std::string what =
+        "a memory limit in MB, an integer >= " + std::to_string(kMinimumMemoryMb) +
+        " (the program needs that much to start)";
+    const long long mb = v->as_integer(what);
+    if (mb < static_cast<long long>(kMinimumMemoryMb)) {
+      v->fail("expected " + what + ", got " + v->preview());
+    }
+    limits.memory_mb = static_cast<std::uint64_t>(mb);
+  }
+  return limits;
+}
+
+void read_camera(const Spec& camera_spec, const std::string& base_dir,
+                 const std::optional<SuiteLoadOnly>& only, Suite& suite) {
   camera_spec.check_keys({"scenes", "solvers", "profiles", "seeds"});
   // Scenes.
   std::set<std::string> labels;
@@ -175,9 +204,14 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
       if (!paths.insert(path).second) continue;  // two patterns naming one file: once
       SuiteScene s;
       s.path = path;
+      if (only &&
+          !(only->kind == SuiteRun::Kind::kCamera && only->subject == suite.scenes.size())) {
+        suite.scenes.push_back(std::move(s));  // not this child's scene: not loaded
+        continue;
+      }
       s.scene = std::make_shared<const camera::Scene>(camera::read_scene_file(path));
       s.label = s.scene->name();
-      require_unique(labels, s.label, entry, "scene");
+      if (!only) require_unique(labels, s.label, entry, "scene");
       suite.scenes.push_back(std::move(s));
     }
   }
@@ -220,7 +254,7 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
     SuiteCameraSolver s;
     s.where = entry.where();
     if (entry.is_map()) {
-      entry.check_keys({"solver", "label", "options", "controller", "area_adaptation"});
+      entry.check_keys({"solver", "label", "options", "controller", "area_adaptation", "limits"});
       s.options.solver = entry.at("solver").as_string("a solver, pipeline or controller name");
       s.options.solver_options = read_options(entry.find("options"));
       if (const Spec* c = entry.find("controller")) read_controller(*c, s.options);
@@ -230,13 +264,18 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
       s.options.solver = entry.as_string("a solver name or a mapping {solver: ..., options: ...}");
       s.label = s.options.solver;
     }
-    try {
-      const SuiteScene& first = suite.scenes.front();
-      camera::make_controller(s.options.solver, *first.scene, first.scene->profile(), s.options);
-    } catch (const csp::InputError&) {
-      throw;
-    } catch (const std::exception& e) {
-      entry.fail(std::string("camera solver '") + s.options.solver + "': " + e.what());
+    s.limits = suite.limits;
+    if (entry.is_map() && entry.find("limits"))
+      s.limits = read_limits(entry.at("limits"), s.limits);
+    if (!only) {
+      try {
+        const SuiteScene& first = suite.scenes.front();
+        camera::make_controller(s.options.solver, *first.scene, first.scene->profile(), s.options);
+      } catch (const csp::InputError&) {
+        throw;
+      } catch (const std::exception& e) {
+        entry.fail(std::string("camera solver '") + s.options.solver + "': " + e.what());
+      }
     }
     s.definition = "solver=" + s.options.solver + ",options{" +
                    options_text(s.options.solver_options) + "}," + controller_text(s.options) +
@@ -248,7 +287,8 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir, Suite& su
   suite.camera_seeds = read_seeds(camera_spec.find("seeds"));
 }
 
-void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) {
+void read_problems(const Spec& spec, const std::string& base_dir,
+                   const std::optional<SuiteLoadOnly>& only, Suite& suite) {
   spec.check_keys({"instances", "solvers", "seeds", "limits"});
   std::set<std::string> labels;
   const Spec& instances = spec.at("instances");
@@ -296,6 +336,10 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
     }
     for (SuiteProblem& p : made) {
       p.where = entry.where();
+      if (only && !(only->kind == SuiteRun::Kind::kToy && only->subject == suite.problems.size())) {
+        suite.problems.push_back(std::move(p));  // not this child's problem: not loaded
+        continue;
+      }
       // Loading once here reports a bad file now, and gives the problem its name.
       try {
         const LoadedSuiteProblem loaded = load_suite_problem(p);
@@ -305,7 +349,7 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
       } catch (const std::exception& e) {
         entry.fail(e.what());
       }
-      require_unique(labels, p.label, entry, "problem");
+      if (!only) require_unique(labels, p.label, entry, "problem");
       suite.problems.push_back(std::move(p));
     }
   }
@@ -317,9 +361,9 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
   for (const Spec& entry : one_or_many(solver_list)) {
     std::vector<SuiteToySolver> made;
     if (entry.is_scalar() && entry.as_string() == "all") {
-      for (const std::string& name : registry.names()) made.push_back({name, name, {}, "", {}});
+      for (const std::string& name : registry.names()) made.push_back({name, name, {}, "", {}, {}});
     } else if (entry.is_map()) {
-      entry.check_keys({"solver", "label", "options"});
+      entry.check_keys({"solver", "label", "options", "limits"});
       SuiteToySolver s;
       s.name = entry.at("solver").as_string("a solver or pipeline name");
       s.options = read_options(entry.find("options"));
@@ -328,10 +372,14 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
     } else {
       const std::string& name =
           entry.as_string("a solver name, `all`, or {solver: ..., options: ...}");
-      made.push_back({name, name, {}, "", {}});
+      made.push_back({name, name, {}, "", {}, {}});
     }
     for (SuiteToySolver& s : made) {
       s.where = entry.where();
+      s.limits = suite.limits;
+      if (entry.is_map() && entry.find("limits")) {
+        s.limits = read_limits(entry.at("limits"), s.limits);
+      }
       try {
         (void)registry.create(s.name, s.options);
       } catch (const std::exception& e) {
@@ -363,15 +411,34 @@ void read_problems(const Spec& spec, const std::string& base_dir, Suite& suite) 
 
 }  // namespace
 
-Suite parse_suite(const csp::Spec& document, const std::string& base_dir) {
+Suite parse_suite(const csp::Spec& document, const std::string& base_dir,
+                  std::optional<SuiteLoadOnly> only) {
   if (!document.is_map()) document.fail("expected a suite: a mapping with name, camera, problems");
-  document.check_keys({"name", "description", "camera", "problems", "report", "statistics"});
+  document.check_keys({"name", "description", "camera", "problems", "report", "statistics",
+                       "isolation", "limits"});
   camera::solver_registry();  // the camera's solvers join the registry before any lookup
   Suite suite;
   suite.name = document.at("name").as_string("a suite name");
   suite.description = document.string_or("description", "");
-  if (const Spec* c = document.find("camera")) read_camera(*c, base_dir, suite);
-  if (const Spec* p = document.find("problems")) read_problems(*p, base_dir, suite);
+  // Isolation and limits first: solver entries start from the suite's limits.
+  if (const Spec* i = document.find("isolation")) {
+    suite.isolated = i->as_bool("isolation: true (each run in a child process) or false");
+    suite.isolation_where = i->where();
+  }
+  if (const Spec* l = document.find("limits")) suite.limits = read_limits(*l, {});
+  if (const Spec* c = document.find("camera")) read_camera(*c, base_dir, only, suite);
+  if (const Spec* p = document.find("problems")) read_problems(*p, base_dir, only, suite);
+  if (!suite.isolated) {
+    // Limits are enforced on a child process; in-process runs cannot honour them.
+    bool limited = suite.limits.any();
+    for (const auto& s : suite.camera_solvers) limited = limited || s.limits.any();
+    for (const auto& s : suite.toy_solvers) limited = limited || s.limits.any();
+    if (limited) {
+      csp::SourceLocation where = suite.isolation_where;
+      throw csp::InputError(where,
+                            "limits need isolated runs: drop `isolation: false` or the limits");
+    }
+  }
   if (const Spec* r = document.find("report")) {
     r->check_keys({"camera_view_frames", "replay_assets"});
     if (const Spec* a = r->find("replay_assets")) {
@@ -392,64 +459,99 @@ Suite parse_suite(const csp::Spec& document, const std::string& base_dir) {
   return suite;
 }
 
-Suite read_suite_file(const std::string& path) {
+Suite read_suite_file(const std::string& path, std::optional<SuiteLoadOnly> only) {
   const csp::Spec document = csp::read_yaml_file(path);
-  Suite suite = parse_suite(document, std::filesystem::path(path).parent_path().string());
+  Suite suite = parse_suite(document, std::filesystem::path(path).parent_path().string(), only);
   suite.path = path;
   return suite;
 }
 
+namespace {
+
+// The run's definition and id. `subject_hash` is the hash of its scene or problem file.
+SuiteRun combination(const Suite& suite, SuiteRun::Kind kind, std::size_t subject,
+                     std::size_t solver, std::size_t profile, std::uint64_t seed,
+                     const std::string& subject_hash) {
+  SuiteRun run;
+  run.kind = kind;
+  run.subject = subject;
+  run.solver = solver;
+  run.seed = seed;
+  const RunLimits* limits = nullptr;
+  if (kind == SuiteRun::Kind::kCamera) {
+    run.profile = profile;
+    run.definition = "camera;scene=" + suite.scenes[subject].label + "#" + subject_hash + ";" +
+                     suite.camera_solvers[solver].definition +
+                     ";profile=" + suite.profiles[profile].definition +
+                     ";seed=" + std::to_string(seed);
+    limits = &suite.camera_solvers[solver].limits;
+    run.id = file_safe(suite.scenes[subject].label + "__" + suite.camera_solvers[solver].label +
+                       "__" + suite.profiles[profile].label + "__s" + std::to_string(seed));
+  } else {
+    const SuiteProblem& p = suite.problems[subject];
+    std::ostringstream toy_limits;
+    toy_limits << "limits=" << suite.toy_limits.time_limit_seconds << ","
+               << suite.toy_limits.max_evaluations << "," << suite.toy_limits.max_iterations;
+    const std::string problem_text =
+        p.kind == SuiteProblem::Kind::kNQueens
+            ? "nqueens=" + std::to_string(p.queens)
+            : "file=" + p.label + "#" + subject_hash + ",colours=" + std::to_string(p.colours);
+    run.definition = "toy;" + problem_text + ";" + suite.toy_solvers[solver].definition + ";" +
+                     toy_limits.str() + ";seed=" + std::to_string(seed);
+    limits = &suite.toy_solvers[solver].limits;
+    run.id =
+        file_safe(p.label + "__" + suite.toy_solvers[solver].label + "__s" + std::to_string(seed));
+  }
+  // Run limits change what a run may report (a timeout at 60 s may finish in 120 s), so
+  // they are part of the definition; only when set, so the ids of suites without limits
+  // stay as they were.
+  if (limits->any()) run.definition += ";run_limits=" + limits->text();
+  run.id += "__" + hex8(fnv1a(run.definition));
+  return run;
+}
+
+std::string subject_hash(const Suite& suite, SuiteRun::Kind kind, std::size_t subject) {
+  if (kind == SuiteRun::Kind::kCamera) return file_hash(suite.scenes[subject].path);
+  const SuiteProblem& p = suite.problems[subject];
+  return p.kind == SuiteProblem::Kind::kNQueens ? std::string() : file_hash(p.path);
+}
+
+}  // namespace
+
 std::vector<SuiteRun> expand_runs(const Suite& suite) {
   std::vector<SuiteRun> runs;
+  constexpr auto kCamera = SuiteRun::Kind::kCamera;
   for (std::size_t sc = 0; sc < suite.scenes.size(); ++sc) {
-    const std::string scene_hash = file_hash(suite.scenes[sc].path);
+    const std::string hash = subject_hash(suite, kCamera, sc);
     for (std::size_t so = 0; so < suite.camera_solvers.size(); ++so) {
       for (std::size_t pr = 0; pr < suite.profiles.size(); ++pr) {
         for (std::uint64_t seed : suite.camera_seeds) {
-          SuiteRun run;
-          run.kind = SuiteRun::Kind::kCamera;
-          run.subject = sc;
-          run.solver = so;
-          run.profile = pr;
-          run.seed = seed;
-          run.definition = "camera;scene=" + suite.scenes[sc].label + "#" + scene_hash + ";" +
-                           suite.camera_solvers[so].definition +
-                           ";profile=" + suite.profiles[pr].definition +
-                           ";seed=" + std::to_string(seed);
-          run.id = file_safe(suite.scenes[sc].label + "__" + suite.camera_solvers[so].label + "__" +
-                             suite.profiles[pr].label + "__s" + std::to_string(seed)) +
-                   "__" + hex8(fnv1a(run.definition));
-          runs.push_back(std::move(run));
+          runs.push_back(combination(suite, kCamera, sc, so, pr, seed, hash));
         }
       }
     }
   }
-  std::ostringstream limits;
-  limits << "limits=" << suite.toy_limits.time_limit_seconds << ","
-         << suite.toy_limits.max_evaluations << "," << suite.toy_limits.max_iterations;
+  constexpr auto kToy = SuiteRun::Kind::kToy;
   for (std::size_t pb = 0; pb < suite.problems.size(); ++pb) {
-    const SuiteProblem& p = suite.problems[pb];
-    const std::string problem_text =
-        p.kind == SuiteProblem::Kind::kNQueens
-            ? "nqueens=" + std::to_string(p.queens)
-            : "file=" + p.label + "#" + file_hash(p.path) + ",colours=" + std::to_string(p.colours);
+    const std::string hash = subject_hash(suite, kToy, pb);
     for (std::size_t so = 0; so < suite.toy_solvers.size(); ++so) {
       for (std::uint64_t seed : suite.toy_seeds) {
-        SuiteRun run;
-        run.kind = SuiteRun::Kind::kToy;
-        run.subject = pb;
-        run.solver = so;
-        run.seed = seed;
-        run.definition = "toy;" + problem_text + ";" + suite.toy_solvers[so].definition + ";" +
-                         limits.str() + ";seed=" + std::to_string(seed);
-        run.id =
-            file_safe(p.label + "__" + suite.toy_solvers[so].label + "__s" + std::to_string(seed)) +
-            "__" + hex8(fnv1a(run.definition));
-        runs.push_back(std::move(run));
+        runs.push_back(combination(suite, kToy, pb, so, 0, seed, hash));
       }
     }
   }
   return runs;
+}
+
+SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject, std::size_t solver,
+                  std::size_t profile, std::uint64_t seed) {
+  return combination(suite, kind, subject, solver, profile, seed,
+                     subject_hash(suite, kind, subject));
+}
+
+const RunLimits& run_limits(const Suite& suite, const SuiteRun& run) {
+  return run.kind == SuiteRun::Kind::kCamera ? suite.camera_solvers[run.solver].limits
+                                             : suite.toy_solvers[run.solver].limits;
 }
 
 camera::CameraProfile run_profile(const Suite& suite, const SuiteRun& run) {

@@ -28,6 +28,7 @@
 #include "domains/camera/control/chase_camera.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/scene.h"
+#include "experiments/run_isolation.h"
 #include "solvers/solver.h"
 
 namespace sightline::experiments {
@@ -45,6 +46,7 @@ struct SuiteCameraSolver {
   camera::ChaseCameraOptions options;
   bool area_adaptation = true;  // false drops the profile's enclosed/semi-enclosed adaptation
   std::string definition;       // canonical text of all of the above, hashed into run ids
+  RunLimits limits;             // the suite's `limits:`, overridden by the entry's own
   csp::SourceLocation where;
 };
 
@@ -71,6 +73,7 @@ struct SuiteToySolver {
   std::string name;  // registered solver or pipeline
   solvers::OptionValues options;
   std::string definition;
+  RunLimits limits;  // the suite's `limits:`, overridden by the entry's own
   csp::SourceLocation where;
 };
 
@@ -99,6 +102,11 @@ struct Suite {
   // `report: replay_assets: beside`: the 3D replay's three.js and scene data go to
   // OUT/report-assets/ beside report.html instead of inside it (`inline`, the default).
   bool replay_assets_beside = false;
+  // Every run in a child process of its own (run_isolation.h; `isolation:`, default true),
+  // with these limits unless a solver entry sets its own (`limits:`; 0 = none).
+  bool isolated = true;
+  RunLimits limits;
+  csp::SourceLocation isolation_where;
 
   // Report settings: how many frames of each scene are shown from the main camera.
   int camera_view_frames = 3;
@@ -119,16 +127,31 @@ struct SuiteRun {
   std::string definition;   // the canonical text the id's hash is taken of
 };
 
+// For a run-one child (isolated_run.h): load only this run's scene or problem (the others
+// keep their path but have no label or data) and skip the checks the runner already made
+// when it read the whole file, so a run of a 50-level suite does not load 50 levels.
+struct SuiteLoadOnly {
+  SuiteRun::Kind kind = SuiteRun::Kind::kCamera;
+  std::size_t subject = 0;
+};
+
 // Reads a suite file. Throws csp::InputError naming the file, line and what was expected:
 // unknown fields, globs matching no file, unreadable scenes, unknown solvers (the message
 // lists the valid names), bad options, duplicate labels, an empty suite.
-Suite read_suite_file(const std::string& path);
+Suite read_suite_file(const std::string& path, std::optional<SuiteLoadOnly> only = {});
 // Reads a suite from a parsed document; relative paths resolve against `base_dir`.
-Suite parse_suite(const csp::Spec& document, const std::string& base_dir);
+Suite parse_suite(const csp::Spec& document, const std::string& base_dir,
+                  std::optional<SuiteLoadOnly> only = {});
 
 // Every combination, camera runs first (scene-major, then solver, profile, seed), then toy
 // runs (problem, solver, seed): the order of results.csv.
 std::vector<SuiteRun> expand_runs(const Suite& suite);
+// One combination, as expand_runs makes it (profile is ignored for toy runs).
+SuiteRun make_run(const Suite& suite, SuiteRun::Kind kind, std::size_t subject, std::size_t solver,
+                  std::size_t profile, std::uint64_t seed);
+
+// The limits a run is held to: its solver entry's.
+const RunLimits& run_limits(const Suite& suite, const SuiteRun& run);
 
 // The profile a camera run uses: the entry's (or the scene's own), without area adaptation
 // when the profile entry or the solver entry asks for that.

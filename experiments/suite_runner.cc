@@ -2,9 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/asio/post.hpp>
 #include <boost/asio/thread_pool.hpp>
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,11 +13,14 @@
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "experiments/camera_run.h"
+#include "experiments/isolated_run.h"
+#include "experiments/output_manifest.h"
 #include "experiments/suite_problem.h"
 #include "experiments/suite_statistics.h"
 #include "solvers/registry.h"
@@ -68,7 +71,14 @@ std::string run_file_text(const Suite& suite, const RunResult& r) {
   out << "id=" << r.id << "\nkind=" << r.kind << "\nsubject=" << one_line(r.subject)
       << "\nsolver=" << one_line(r.solver) << "\nprofile=" << one_line(r.profile)
       << "\nseed=" << r.seed << "\nstatus=" << r.status << "\nnote=" << one_line(r.note)
-      << "\ndefinition=" << r.definition << '\n';
+      << "\ndefinition=" << r.definition << "\nhost=" << one_line(r.provenance.host)
+      << "\ncpu_model=" << one_line(r.provenance.cpu_model)
+      << "\nbuild_commit=" << one_line(r.provenance.build_commit)
+      << "\ncommand_line=" << one_line(r.provenance.command_line) << '\n';
+  if (!r.run_wall_s.empty()) {
+    out << "run_wall_s=" << r.run_wall_s << "\nrun_cpu_s=" << r.run_cpu_s
+        << "\nrun_max_rss_mb=" << r.run_max_rss_mb << '\n';
+  }
   const std::vector<std::string> columns = metric_columns(suite);
   for (std::size_t i = 0; i < columns.size() && i < r.values.size(); ++i) {
     if (!r.values[i].empty()) out << "metric." << columns[i] << '=' << r.values[i] << '\n';
@@ -140,19 +150,26 @@ void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
   context.want_breakdown = false;
   const solvers::SolverResult result =
       solver->solve(*loaded.problem, loaded.problem->default_assignment(), context);
+  const long long broken =
+      loaded.count_broken ? static_cast<long long>(loaded.count_broken(result.best)) : -1;
   const std::size_t first = suite.scenes.empty() ? 0 : metric_names().size();
-  const std::vector<std::string> values = {
-      number_text(result.score.soft),
-      number_text(static_cast<double>(result.score.hard)),
-      result.feasible() ? "1" : "0",
-      number_text(result.wall_seconds),
-      std::to_string(result.evaluations),
-      std::to_string(result.iterations),
-      std::string(solvers::to_string(result.stop)),
-      loaded.count_broken ? std::to_string(loaded.count_broken(result.best)) : std::string()};
+  const std::vector<std::string> values = {number_text(result.score.soft),
+                                           number_text(static_cast<double>(result.score.hard)),
+                                           result.feasible() ? "1" : "0",
+                                           number_text(result.wall_seconds),
+                                           std::to_string(result.evaluations),
+                                           std::to_string(result.iterations),
+                                           std::string(solvers::to_string(result.stop)),
+                                           broken >= 0 ? std::to_string(broken) : std::string()};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
+  if (const std::string why =
+          toy_answer_problem(*loaded.problem, result.best, result.score, broken);
+      !why.empty()) {
+    r.status = "wrong";
+    r.note = why;
+  }
 }
 
 // Progress on stderr, one line rewritten in place.
@@ -223,12 +240,46 @@ std::vector<std::string> result_columns(const Suite& suite) {
                                       "solver", "profile", "seed", "status"};
   for (const std::string& m : metric_columns(suite)) columns.push_back(m);
   columns.push_back("note");
+  for (const char* p : {"host", "cpu_model", "build_commit", "command_line", "run_wall_s",
+                        "run_cpu_s", "run_max_rss_mb"}) {
+    columns.push_back(p);
+  }
   return columns;
+}
+
+bool is_provenance_column(const std::string& column) {
+  return column == "host" || column == "cpu_model" || column == "build_commit" ||
+         column == "command_line";
+}
+
+std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignment& best,
+                               const csp::Score& reported, long long broken) {
+  if (best.size() != problem.num_variables()) {
+    return "wrong answer: the assignment has " + std::to_string(best.size()) + " values for " +
+           std::to_string(problem.num_variables()) + " variables";
+  }
+  const csp::Score actual = problem.score(best);
+  auto differs = [](double a, double b) {
+    return std::abs(a - b) > 1e-6 * std::max({1.0, std::abs(a), std::abs(b)});
+  };
+  if (differs(actual.hard, reported.hard) || differs(actual.soft, reported.soft)) {
+    return "wrong answer: reported hard " + number_text(reported.hard) + ", cost " +
+           number_text(reported.soft) + "; a full re-evaluation gives hard " +
+           number_text(actual.hard) + ", cost " + number_text(actual.soft);
+  }
+  // The judge counts what the model's constraints mean (attacking queens: hard; conflicting
+  // edges: soft, a Max-CSP), so only a perfect score is comparable whatever the weights.
+  if (reported.feasible() && std::abs(reported.soft) <= 1e-9 && broken > 0) {
+    return "wrong answer: reported feasible at cost 0, but the independent check counts " +
+           std::to_string(broken) + " broken";
+  }
+  return "";
 }
 
 bool is_timing_column(const std::string& column) {
   return column == "solve_us_p50" || column == "solve_us_p99" || column == "solve_us_max" ||
-         column == "time_s";
+         column == "time_s" || column == "run_wall_s" || column == "run_cpu_s" ||
+         column == "run_max_rss_mb";
 }
 
 RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path) {
@@ -239,6 +290,9 @@ RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string
     } else {
       execute_toy(suite, run, r);
     }
+  } catch (const std::bad_alloc&) {
+    r.status = "memout";
+    r.note = "out of memory (std::bad_alloc)";
   } catch (const std::exception& e) {
     r.status = "failed";
     r.note = one_line(e.what());
@@ -268,6 +322,11 @@ bool read_run_file(const std::string& path, RunResult& r) {
   r.status = fields["status"];
   r.note = fields["note"];
   r.definition = fields["definition"];
+  r.provenance = {fields["host"], fields["cpu_model"], fields["build_commit"],
+                  fields["command_line"]};
+  r.run_wall_s = fields["run_wall_s"];
+  r.run_cpu_s = fields["run_cpu_s"];
+  r.run_max_rss_mb = fields["run_max_rss_mb"];
   try {
     r.seed = std::stoull(fields["seed"]);
   } catch (const std::exception&) {
@@ -284,21 +343,68 @@ std::string run_file_base(const std::string& out_dir, const std::string& id) {
   return (fs::path(out_dir) / "runs" / id).string();
 }
 
-RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir) {
+void write_run_file(const Suite& suite, const RunResult& result, const std::string& path) {
+  write_atomically(path, run_file_text(suite, result));
+}
+
+RunResult record_run_here(const Suite& suite, const SuiteRun& run, const std::string& out_dir,
+                          const std::string& command_line) {
   const std::string base = run_file_base(out_dir, run.id);
   RunResult r = execute_run(suite, run, base + ".trace.csv");
-  write_atomically(base + ".result", run_file_text(suite, r));
+  r.provenance = this_process_provenance();
+  r.provenance.command_line = command_line;
+  write_run_file(suite, r, base + ".result");
+  return r;
+}
+
+bool runs_isolated(const Suite& suite, const IsolationOptions& isolation) {
+  const bool isolated = isolation.isolated.value_or(suite.isolated);
+  if (!isolated) {
+    bool limited = suite.limits.any();
+    for (const auto& s : suite.camera_solvers) limited = limited || s.limits.any();
+    for (const auto& s : suite.toy_solvers) limited = limited || s.limits.any();
+    if (limited) {
+      throw std::runtime_error("suite '" + suite.name +
+                               "' sets run limits, which only isolated runs can be held to: "
+                               "run it without --in-process");
+    }
+  }
+  return isolated;
+}
+
+RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir,
+                         const IsolationOptions& isolation) {
+  if (runs_isolated(suite, isolation)) return run_isolated(suite, run, out_dir, isolation.program);
+  return record_run_here(suite, run, out_dir, this_process_provenance().command_line);
+}
+
+RunResult restore_result(const Suite& suite, const SuiteRun& run, const RunResult& stored) {
+  // Metric values were stored by name: put them back in this suite's column order.
+  const std::vector<std::string> columns = metric_columns(suite);
+  RunResult r = skeleton(suite, run);
+  r.status = stored.status;
+  r.note = stored.note;
+  r.provenance = stored.provenance;
+  r.run_wall_s = stored.run_wall_s;
+  r.run_cpu_s = stored.run_cpu_s;
+  r.run_max_rss_mb = stored.run_max_rss_mb;
+  for (const std::string& kv : stored.values) {
+    const std::size_t eq = kv.find('=');
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (columns[c] == kv.substr(0, eq)) r.values[c] = kv.substr(eq + 1);
+    }
+  }
   return r;
 }
 
 SuiteState read_suite_state(const Suite& suite, const std::string& out_dir) {
+  SuiteState state;
+  state.runs = expand_runs(suite);
+  claim_output_folder(suite, state.runs, out_dir);
   const fs::path runs_dir = fs::path(out_dir) / "runs";
   std::error_code ec;
   fs::create_directories(runs_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + runs_dir.string() + ": " + ec.message());
-  SuiteState state;
-  state.runs = expand_runs(suite);
-  const std::vector<std::string> columns = metric_columns(suite);
   state.results.resize(state.runs.size());
   state.finished.assign(state.runs.size(), 0);
   for (std::size_t i = 0; i < state.runs.size(); ++i) {
@@ -306,17 +412,7 @@ SuiteState read_suite_state(const Suite& suite, const std::string& out_dir) {
     RunResult stored;
     if (read_run_file(run_file_base(out_dir, run.id) + ".result", stored) &&
         stored.definition == run.definition) {
-      // Metric values were stored by name: put them back in this suite's column order.
-      RunResult r = skeleton(suite, run);
-      r.status = stored.status;
-      r.note = stored.note;
-      for (const std::string& kv : stored.values) {
-        const std::size_t eq = kv.find('=');
-        for (std::size_t c = 0; c < columns.size(); ++c) {
-          if (columns[c] == kv.substr(0, eq)) r.values[c] = kv.substr(eq + 1);
-        }
-      }
-      state.results[i] = std::move(r);
+      state.results[i] = restore_result(suite, run, stored);
       state.finished[i] = 1;
       ++state.reused;
     } else {
@@ -341,11 +437,21 @@ SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
     if (!state.finished[i]) continue;
     const RunResult& r = state.results[i];
     if (r.status == "failed") ++outcome.failed;
+    if (r.status == "timeout" || r.status == "memout" || r.status == "crash" ||
+        r.status == "wrong") {
+      ++outcome.not_ok;
+    }
     csv << csv_field(r.id) << ',' << r.kind << ',' << csv_field(r.subject) << ','
         << csv_field(r.solver) << ',' << csv_field(r.profile) << ',' << r.seed << ','
         << r.status;
     for (const std::string& v : r.values) csv << ',' << csv_field(v);
-    csv << ',' << csv_field(r.note) << '\n';
+    csv << ',' << csv_field(r.note);
+    for (const std::string* p : {&r.provenance.host, &r.provenance.cpu_model,
+                                 &r.provenance.build_commit, &r.provenance.command_line,
+                                 &r.run_wall_s, &r.run_cpu_s, &r.run_max_rss_mb}) {
+      csv << ',' << csv_field(*p);
+    }
+    csv << '\n';
     outcome.results.push_back(r);
   }
   write_atomically((out / "results.csv").string(), csv.str());
@@ -356,6 +462,7 @@ SuiteOutcome write_suite_outputs(const Suite& suite, const std::string& out_dir,
 
 SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  (void)runs_isolated(suite, options.isolation);  // refuses limits without isolation, early
   SuiteState state = read_suite_state(suite, options.out_dir);
   std::vector<std::size_t> pending = state.pending;
   if (options.max_new_runs > 0 && pending.size() > options.max_new_runs) {
@@ -372,7 +479,8 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
     for (std::size_t i : pending) {
       boost::asio::post(pool, [&, i] {
         try {
-          state.results[i] = run_and_record(suite, state.runs[i], options.out_dir);
+          state.results[i] =
+              run_and_record(suite, state.runs[i], options.out_dir, options.isolation);
           state.finished[i] = 1;
         } catch (const std::exception& e) {
           std::lock_guard<std::mutex> lock(error_mutex);

@@ -1,6 +1,10 @@
 // SuiteRunner: runs every combination of a suite in parallel, resumably, and tabulates them.
 //
 // Runs are independent, so they go to a Boost.Asio thread_pool, one per core (or --jobs).
+// Each run executes in a child process of its own by default (isolated_run.h), under the
+// suite's limits, so a crash, a hang or a memory blow-up loses that run only (its output,
+// if any, is kept in OUT/runs/<id>.log). OUT/manifest names the suite a folder belongs to
+// (output_manifest.h).
 // Each finished run leaves two files in OUT/runs/: its trace (camera runs; FORMATS.md) and a
 // one-row result file, both written to a ".tmp" name first and renamed, the result last. A
 // run counts as finished only when its result file exists, parses, and names the same
@@ -14,9 +18,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "csp/problem.h"
+#include "experiments/provenance.h"
 #include "experiments/suite.h"
 
 namespace sightline::experiments {
@@ -29,10 +36,27 @@ struct RunResult {
   std::string solver;
   std::string profile;  // "-" for toy runs
   std::uint64_t seed = 1;
-  std::string status;   // "ok", "skipped" (solver unsuitable), "failed" (an exception)
+  // "ok"; "skipped" (the solver declared the problem unsuitable); "failed" (an exception,
+  // e.g. a file the run needs is unreadable); "wrong" (the run's answer fails its
+  // independent check: a toy run's reported cost or hard violation differs from a full
+  // re-evaluation, or it claims a perfect score while the independent judge counts broken
+  // conditions); and for isolated runs "timeout" (wall or CPU limit), "memout" (an
+  // allocation refused) or "crash" (a signal, or an exit without a result).
+  std::string status;
   std::vector<std::string> values;  // metric values as text ("" where not applicable)
-  std::string note;     // why skipped or failed; the definition is kept in the run file
+  std::string note;  // why skipped, failed, wrong, ...; the definition is kept in the run file
   std::string definition;
+  Provenance provenance;  // who made the result: host, CPU, build commit, command line
+  // What an isolated run's process used, as the kernel counted it (wait4): its wall time,
+  // CPU time (user + system, with what it started and waited for) and peak resident memory.
+  // "" for in-process runs.
+  std::string run_wall_s, run_cpu_s, run_max_rss_mb;
+};
+
+// Whether runs execute in child processes (isolated_run.h).
+struct IsolationOptions {
+  std::optional<bool> isolated;            // unset: the suite's `isolation:` (default true)
+  std::string program = "/proc/self/exe";  // the sightline program a child runs
 };
 
 struct RunnerOptions {
@@ -40,6 +64,7 @@ struct RunnerOptions {
   unsigned jobs = 0;             // 0: one per hardware thread
   std::size_t max_new_runs = 0;  // > 0: stop after starting this many unfinished runs
   bool progress = true;          // shown only if stderr is also a terminal
+  IsolationOptions isolation;
 };
 
 struct SuiteOutcome {
@@ -47,6 +72,7 @@ struct SuiteOutcome {
   std::size_t reused = 0;    // finished by an earlier invocation
   std::size_t ran = 0;       // done by this one
   std::size_t failed = 0;    // status "failed" (this invocation or earlier)
+  std::size_t not_ok = 0;    // timeout, memout, crash or wrong (this invocation or earlier)
   std::vector<RunResult> results;  // every finished run, in the suite's order
   double seconds = 0;
 };
@@ -62,10 +88,21 @@ std::string metric_text(const std::vector<std::string>& columns, const RunResult
 double metric_value(const std::vector<std::string>& columns, const RunResult& r,
                     const std::string& name);
 // All results.csv columns: id, kind, scene (or problem), solver, profile, seed, status,
-// the metric columns, note.
+// the metric columns, note, then the provenance columns host, cpu_model, build_commit,
+// command_line, then an isolated run's resources run_wall_s, run_cpu_s, run_max_rss_mb.
 std::vector<std::string> result_columns(const Suite& suite);
-// Names of the timing columns (they differ between repeats of the same run).
+// Names of the timing columns (they differ between repeats of the same run), including
+// the resource columns run_wall_s, run_cpu_s and run_max_rss_mb.
 bool is_timing_column(const std::string& column);
+// Names of the provenance columns (they differ between machines, builds and invocations).
+bool is_provenance_column(const std::string& column);
+
+// Why a toy run's answer is wrong ("" when its independent check accepts it): `reported`
+// differs from a full re-evaluation of `best` by problem.score (hard and soft to a relative
+// 1e-6), or it claims a perfect score (feasible, cost 0) while `broken` (the independent
+// judge's count for `best`, -1 when there is none) is above 0.
+std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignment& best,
+                               const csp::Score& reported, long long broken);
 
 // Runs one combination now (no files). Exceptions become status "failed".
 RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path);
@@ -74,8 +111,22 @@ RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string
 // OUT/runs/<id>: the path of a run's files without extension (".result", ".trace.csv").
 std::string run_file_base(const std::string& out_dir, const std::string& id);
 // Runs one combination and records it: its trace, then its result file, each written to a
-// ".tmp" name and renamed. Throws std::runtime_error when the files cannot be written.
-RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir);
+// ".tmp" name and renamed. Isolated (the default, see IsolationOptions) it runs in a child
+// process under the run's limits and ends with any status; otherwise in this process.
+// Throws std::runtime_error when the files cannot be written or the child cannot start.
+RunResult run_and_record(const Suite& suite, const SuiteRun& run, const std::string& out_dir,
+                         const IsolationOptions& isolation = {});
+// Whether runs of `suite` are isolated under `isolation`; throws std::runtime_error when
+// they are not but the suite sets limits (only a child process can be held to them).
+bool runs_isolated(const Suite& suite, const IsolationOptions& isolation);
+// The in-process half, what an isolated child does: execute_run, then the files, the result
+// naming `command_line` as the command that made it.
+RunResult record_run_here(const Suite& suite, const SuiteRun& run, const std::string& out_dir,
+                          const std::string& command_line);
+// Writes a run's result file (write, then rename).
+void write_run_file(const Suite& suite, const RunResult& result, const std::string& path);
+// A result read by read_run_file, its metrics put back in `suite`'s column order.
+RunResult restore_result(const Suite& suite, const SuiteRun& run, const RunResult& stored);
 
 // What an output folder holds for a suite: every run of expand_runs(suite), which of them
 // are finished (a result file naming the same definition) and their results.
@@ -86,7 +137,9 @@ struct SuiteState {
   std::vector<std::size_t> pending;  // indices of the unfinished runs, in suite order
   std::size_t reused = 0;            // finished before this call
 };
-// Reads OUT/runs (created if missing; std::runtime_error if it cannot be).
+// Claims the folder for the suite first (output_manifest.h: OUT/manifest; refuses another
+// suite's folder), then reads OUT/runs (created if missing; std::runtime_error if it
+// cannot be).
 SuiteState read_suite_state(const Suite& suite, const std::string& out_dir);
 // Writes OUT/results.csv and OUT/stats.csv from the finished runs and returns the outcome
 // (total, reused, failed, results; the caller sets ran and seconds and writes summary.md).

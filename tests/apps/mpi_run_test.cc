@@ -86,7 +86,7 @@ std::string without_timing(const Suite& suite, const std::string& csv) {
     for (char ch : line + ",") {
       if (ch == '"') quoted = !quoted;
       if (ch == ',' && !quoted) {
-        out += (c < columns.size() && is_timing_column(columns[c]) ? "<t>" : field) + ",";
+        out += (c < columns.size() && (is_timing_column(columns[c]) || is_provenance_column(columns[c])) ? "<t>" : field) + ",";
         field.clear();
         ++c;
       } else {

@@ -39,7 +39,8 @@ std::string read_text(const std::string& path) {
   return text.str();
 }
 
-// results.csv with the timing columns blanked: they measure the machine, not the run.
+// results.csv with the timing and provenance columns blanked: they describe the machine and
+// the invocation, not the run.
 std::string without_timing(const Suite& suite, const std::string& csv) {
   const std::vector<std::string> columns = result_columns(suite);
   std::istringstream in(csv);
@@ -51,7 +52,9 @@ std::string without_timing(const Suite& suite, const std::string& csv) {
     for (char ch : line + ",") {
       if (ch == '"') quoted = !quoted;
       if (ch == ',' && !quoted) {
-        out += (c < columns.size() && is_timing_column(columns[c]) ? "<t>" : field) + ",";
+        const bool blank = c < columns.size() &&
+                           (is_timing_column(columns[c]) || is_provenance_column(columns[c]));
+        out += (blank ? "<t>" : field) + ",";
         field.clear();
         ++c;
       } else {
@@ -69,6 +72,7 @@ RunnerOptions options_for(const std::string& out, std::size_t max_new_runs = 0) 
   o.jobs = 2;
   o.max_new_runs = max_new_runs;
   o.progress = false;
+  o.isolation.program = SIGHTLINE_BINARY;  // not this test program
   return o;
 }
 
