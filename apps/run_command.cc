@@ -48,6 +48,7 @@ void run_suite_command(const RunOptions& o) {
     experiments::MpiRunnerOptions mpi;
     mpi.out_dir = o.out;
     mpi.max_new_runs = o.max_runs;
+    mpi.isolation.program = "/proc/self/exe";  // this program is sightline: its own child
     if (o.in_process) mpi.isolation.isolated = false;
     std::optional<experiments::SuiteOutcome> on_rank_0 = experiments::run_suite_mpi(suite, mpi);
     if (!on_rank_0) return;  // a worker rank: rank 0 reports
@@ -57,6 +58,7 @@ void run_suite_command(const RunOptions& o) {
     runner.out_dir = o.out;
     runner.jobs = o.jobs;
     runner.max_new_runs = o.max_runs;
+    runner.isolation.program = "/proc/self/exe";
     if (o.in_process) runner.isolation.isolated = false;
     outcome = experiments::run_suite(suite, runner);
   }

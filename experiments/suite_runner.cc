@@ -358,7 +358,7 @@ RunResult record_run_here(const Suite& suite, const SuiteRun& run, const std::st
 }
 
 bool runs_isolated(const Suite& suite, const IsolationOptions& isolation) {
-  const bool isolated = isolation.isolated.value_or(suite.isolated);
+  const bool isolated = isolation.isolated.value_or(suite.isolated) && !isolation.program.empty();
   if (!isolated) {
     bool limited = suite.limits.any();
     for (const auto& s : suite.camera_solvers) limited = limited || s.limits.any();
@@ -366,7 +366,10 @@ bool runs_isolated(const Suite& suite, const IsolationOptions& isolation) {
     if (limited) {
       throw std::runtime_error("suite '" + suite.name +
                                "' sets run limits, which only isolated runs can be held to: "
-                               "run it without --in-process");
+                               "run it without --in-process or `isolation: false`" +
+                               (isolation.program.empty()
+                                    ? std::string(" (and name the sightline program)")
+                                    : std::string()));
     }
   }
   return isolated;

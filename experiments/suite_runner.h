@@ -54,9 +54,13 @@ struct RunResult {
 };
 
 // Whether runs execute in child processes (isolated_run.h).
+// Isolation needs the sightline program to start as the child: the program itself names it
+// ("/proc/self/exe", apps/run_command.cc). A library caller that names none (a test, a
+// bench) runs in process, since its own executable is not sightline and would not know the
+// child's subcommand; a suite with limits then cannot be run (they need a child).
 struct IsolationOptions {
-  std::optional<bool> isolated;            // unset: the suite's `isolation:` (default true)
-  std::string program = "/proc/self/exe";  // the sightline program a child runs
+  std::optional<bool> isolated;  // unset: the suite's `isolation:` (default true)
+  std::string program;           // the sightline program a child runs; empty: in process
 };
 
 struct RunnerOptions {
