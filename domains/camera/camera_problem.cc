@@ -14,8 +14,9 @@ namespace sightline::camera {
 CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
     : scene_(&scene),
       profile_(&profile),
+      at_time_(std::make_unique<SceneAtTime>(scene)),
       problem_(std::make_unique<csp::Problem>("camera: " + scene.name())),
-      areas_(scene, profile) {
+      areas_(*at_time_, profile) {
   if (const std::string error = profile.validate(); !error.empty()) {
     throw std::invalid_argument("camera profile '" + profile.name + "': " + error);
   }
@@ -49,16 +50,16 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
                                  kCamX, kCamY, kCamZ, frame_, profile.frame_coherence_weight),
                              "frame coherence");
   ids_.look_at = add(std::make_unique<LookAtVisibleConstraint>(
-                         kCamX, kCamY, kCamZ, scene, frame_, profile.look_at_weight,
+                         kCamX, kCamY, kCamZ, *at_time_, frame_, profile.look_at_weight,
                          profile.look_at_hard),
                      "look-at visible");
   if (profile.visible_fraction_weight > 0) {
     ids_.visible_fraction =
-        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
                                                        profile.visible_fraction_weight),
             "body visible");
   }
-  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
                                                              profile.clearance_weight,
                                                              profile.clearance_hard),
                        "clearance");
@@ -102,6 +103,7 @@ AreaTransition CameraProblem::set_frame(const CharacterState& character,
     throw std::invalid_argument("camera frame interval dt must be > 0");
   }
   character_ = character;
+  at_time_->set_time(character.t);
   const AreaTransition transition = areas_.update(character);
   const EffectiveProfile& e = areas_.current();
   FrameValues values;

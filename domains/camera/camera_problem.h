@@ -15,6 +15,10 @@
 //
 // set_frame() writes the frame into the parameters and the domains: it never adds or removes
 // anything and never allocates, so a solver may keep per-problem state across frames.
+//
+// Geometry: the problem owns a SceneAtTime, set to the character's time by set_frame(), and
+// every constraint that asks the geometry (look-at visible, body visible, clearance) asks
+// it, so movers count at the frame's time. Nothing here asks Scene's static-only queries.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +31,7 @@
 #include "domains/camera/constraints/frame_parameters.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 
@@ -49,6 +54,8 @@ class CameraProblem {
   csp::Problem& problem() { return *problem_; }
   const csp::Problem& problem() const { return *problem_; }
   const Scene& scene() const { return *scene_; }
+  // The scene's geometry at the last set_frame()'s time (movers placed there).
+  const SceneAtTime& scene_at_time() const { return *at_time_; }
   const CameraProfile& profile() const { return *profile_; }
   const FrameParameters& frame() const { return frame_; }
   const ConstraintIds& ids() const { return ids_; }
@@ -77,6 +84,8 @@ class CameraProblem {
 
   const Scene* scene_;
   const CameraProfile* profile_;
+  // Owned through a pointer so the constraints' references survive a move of the problem.
+  std::unique_ptr<SceneAtTime> at_time_;
   std::unique_ptr<csp::Problem> problem_;
   FrameParameters frame_;
   ConstraintIds ids_;

@@ -56,11 +56,11 @@ void ChaseCamera::reset(const Eigen::Vector3d& position) {
 
 bool ChaseCamera::clear(const Eigen::Vector3d& p) const {
   const double r = problem_.profile().clearance_radius;
-  return scene_->clearance(p, r + 1e-6) >= r;
+  return problem_.scene_at_time().clearance(p, r + 1e-6) >= r;
 }
 
 bool ChaseCamera::sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const {
-  return scene_->line_of_sight(p, look);
+  return problem_.scene_at_time().line_of_sight(p, look);
 }
 
 Eigen::Vector3d ChaseCamera::solve_from_here() {

@@ -76,6 +76,7 @@ class ChaseCamera : public CameraController {
   double max_step(double dt) const override { return options_.max_speed * dt; }
 
  private:
+  // Geometry tests at the frame's time (movers included), through the problem's SceneAtTime.
   bool clear(const Eigen::Vector3d& p) const;
   bool sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const;
   bool usable(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const {
