@@ -6,6 +6,7 @@
 #include "csp/constraint_kinds.h"
 #include "csp/kinds/constraint_entry.h"
 #include "domains/camera/constraints/clearance.h"
+#include "domains/camera/constraints/future_visibility.h"
 #include "domains/camera/constraints/occlusion.h"
 #include "domains/camera/constraints/smooth_constraints.h"
 
@@ -15,6 +16,7 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
     : scene_(&scene),
       profile_(&profile),
       at_time_(std::make_unique<SceneAtTime>(scene)),
+      prediction_(std::make_unique<MotionPrediction>(scene, profile.anticipation)),
       problem_(std::make_unique<csp::Problem>("camera: " + scene.name())),
       areas_(*at_time_, profile) {
   if (const std::string error = profile.validate(); !error.empty()) {
@@ -63,6 +65,11 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
                                                              profile.clearance_weight,
                                                              profile.clearance_hard),
                        "clearance");
+  if (profile.anticipation.lookahead != Lookahead::kNone && profile.anticipation.weight > 0) {
+    ids_.future_visible = add(std::make_unique<FutureVisibleConstraint>(
+                                  kCamX, kCamY, kCamZ, *prediction_, profile.anticipation.weight),
+                              "future visible");
+  }
   add_extras();
   // A meaningful first frame: the scene's start, one frame interval.
   set_frame(first, start, 1.0 / scene.frame_rate());
@@ -104,6 +111,7 @@ AreaTransition CameraProblem::set_frame(const CharacterState& character,
   }
   character_ = character;
   at_time_->set_time(character.t);
+  prediction_->update(character);
   const AreaTransition transition = areas_.update(character);
   const EffectiveProfile& e = areas_.current();
   FrameValues values;

@@ -24,6 +24,17 @@ void SceneAtTime::set_time(double t) {
   }
 }
 
+void SceneAtTime::set_time_extrapolated(double now, double ahead) {
+  time_ = now + ahead;
+  bounds_ = Aabb::empty();
+  const std::vector<Mover>& movers = scene_->movers();
+  for (std::size_t i = 0; i < movers.size(); ++i) {
+    const Eigen::Vector3d p = movers[i].position_at(now, &segments_[i]);
+    boxes_[i] = Aabb::around_feet(p + ahead * movers[i].velocity_at(now), movers[i].size());
+    bounds_.merge(boxes_[i]);
+  }
+}
+
 bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
   if (boxes_.empty() || !segment_hits_box(a, b, bounds_)) return false;
   for (const Aabb& box : boxes_) {

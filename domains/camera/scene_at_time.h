@@ -33,6 +33,10 @@ class SceneAtTime {
   const Scene& scene() const { return *scene_; }
   // Places every mover at time t (seconds). O(movers) for times that advance frame by frame.
   void set_time(double t);
+  // Places every mover where its velocity at `now` carries it `ahead` seconds later (a
+  // constant-velocity forecast from what a game knows at `now`, not its future keyframes);
+  // time() becomes now + ahead. The anticipating camera's `lookahead: motion` uses this.
+  void set_time_extrapolated(double now, double ahead);
   double time() const { return time_; }
   // The movers' boxes at time(), in the order of scene().movers().
   const std::vector<Aabb>& mover_boxes() const { return boxes_; }

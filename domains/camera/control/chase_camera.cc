@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "domains/camera/control/camera_solvers.h"
@@ -124,6 +125,51 @@ bool ChaseCamera::backed_up(const CharacterState& character, const Eigen::Vector
   return !usable(ideal, look);
 }
 
+std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d& look,
+                                                           const Eigen::Vector3d& step,
+                                                           double dt) const {
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  Eigen::Vector3d toward = look - position_;
+  toward.y() = 0;
+  if (toward.norm() < 1e-9) toward = Eigen::Vector3d::UnitX();
+  toward.normalize();
+  const Eigen::Vector3d side(toward.z(), 0, -toward.x());  // horizontal, across the view
+  const Eigen::Vector3d directions[] = {
+      up, -up, toward, -toward, side, -side, (up + toward).normalized(),
+      (up + side).normalized(), (up - side).normalized(), (toward + side).normalized(),
+      (toward - side).normalized()};
+  // Each move is priced at this frame's cost plus kVelocityChangeCost per m/s of change in
+  // the camera's velocity, so among usable moves the one closest to the spring's step (the
+  // smoothest) wins unless another is clearly better placed. Staying is priced the same way
+  // when it is usable, and a move must beat it.
+  constexpr double kVelocityChangeCost = 0.1;
+  const double reach = max_step(dt) * (1 + 1e-9);
+  auto price = [&](const Eigen::Vector3d& next) {
+    const double values[3] = {next.x(), next.y(), next.z()};
+    return problem_.problem().cost(values) +
+           kVelocityChangeCost * ((next - position_) / dt - velocity_).norm();
+  };
+  std::optional<Eigen::Vector3d> best;
+  double best_cost = usable(position_, look) ? price(position_)
+                                             : std::numeric_limits<double>::infinity();
+  auto consider = [&](const Eigen::Vector3d& next) {
+    if ((next - position_).norm() > reach) return;
+    if (!usable(next, look) || !sees(position_, next)) return;
+    const double cost = price(next);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = next;
+    }
+  };
+  for (const Eigen::Vector3d& centre : {step, position_}) {
+    for (double length : {0.125, 0.25, 0.5, 1.0}) {
+      for (const Eigen::Vector3d& d : directions) consider(centre + length * max_step(dt) * d);
+    }
+  }
+  for (double fraction : {0.75, 0.5, 0.25}) consider(position_ + fraction * (step - position_));
+  return best;
+}
+
 const CameraFrame& ChaseCamera::update(const CharacterState& character, double dt) {
   const auto started = std::chrono::steady_clock::now();
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
@@ -136,12 +182,13 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
 
   // Discretionary cuts (thesis table 9): leaving an enclosed area for the outside, and
   // backing up into an obstruction (once per episode).
+  const CutPolicy& policy = problem_.profile().cuts;
   bool left_enclosed = false;
-  if (transition.left && scene_->areas()[*transition.left].kind == AreaKind::kEnclosed) {
+  if (policy.leave_enclosed && transition.left && scene_->areas()[*transition.left].kind == AreaKind::kEnclosed) {
     const auto& now = problem_.effective().area;
     left_enclosed = !now || scene_->areas()[*now].kind != AreaKind::kEnclosed;
   }
-  const bool backing = backed_up(character, look);
+  const bool backing = policy.backing_up && backed_up(character, look);
   const bool backing_started = backing && !was_backed_up_;
   was_backed_up_ = backing;
   const bool may_cut = since_cut_ >= options_.min_shot_seconds && frames_ > 0;
@@ -173,7 +220,10 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     bool moved = false;
     Eigen::Vector3d velocity;
     const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
+    // With smooth_escape the shorter steps are among the escape's moves (priced there).
+    const bool escapes = guard && policy.smooth_escape;
     for (double fraction : {1.0, 0.5, 0.25}) {
+      if (escapes && fraction < 1) break;
       const Eigen::Vector3d next = position_ + fraction * (step - position_);
       if (!guard || (usable(next, look) && sees(position_, next))) {
         velocity_ = fraction * velocity;
@@ -182,13 +232,21 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         break;
       }
     }
+    const std::optional<Eigen::Vector3d> escape =
+        !moved && escapes ? smooth_escape(look, step, dt) : std::nullopt;
     if (moved) {
+      stuck_for_ = 0;
+    } else if (escape) {
+      velocity_ = (*escape - position_) / dt;
+      position_ = *escape;
+      set_filtered_target(position_);
       stuck_for_ = 0;
     } else if (usable(position_, look)) {
       velocity_.setZero();
       set_filtered_target(position_);
       stuck_for_ += dt;
-      if (stuck_for_ >= options_.stuck_seconds && may_cut && usable(target, look) &&
+      if (policy.stuck && stuck_for_ >= options_.stuck_seconds && may_cut &&
+          usable(target, look) &&
           (target - position_).norm() > max_step(dt)) {
         cut_to(target, CutReason::kStuck);
       }

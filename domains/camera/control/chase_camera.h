@@ -10,7 +10,18 @@
 //        through geometry and never to a position from which the look-at point is hidden;
 //      - or by a cut (a flagged jump) when the character leaves an enclosed area, when it
 //        backs up to a wall or other obstruction, when the camera has been stuck behind an
-//        obstacle for a while, and whenever no smooth move keeps the character visible.
+//        obstacle for a while (each of these three is a profile option, CutPolicy: on in
+//        the thesis profiles, off in the anticipating one), and whenever no smooth move
+//        keeps the character visible (always: the last resort).
+//   With cuts.smooth_escape, when the spring's step toward the target is blocked the camera
+//   tries moves around that step and around where it is (1/8 to all of max_speed x dt: up,
+//   down, toward and away from the look-at point, to either side and their mixes, never
+//   longer than max_speed x dt in all), and takes the cheapest under this frame's problem
+//   (so future visibility chooses among them) plus a price on the change of velocity, that
+//   keeps the look-at point visible and crosses nothing, if it is cheaper than staying (or
+//   staying loses sight). Only then does it stay, and after
+//   stuck_seconds cut (if cuts.stuck), or cut because the look-at point is lost. A game
+//   camera slides along the wall, rises or pulls in before it pops.
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -22,6 +33,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "domains/camera/camera_problem.h"
@@ -90,6 +102,10 @@ class ChaseCamera : public CameraController {
                               Eigen::Vector3d* velocity) const;
   void cut_to(const Eigen::Vector3d& p, CutReason reason);
   bool backed_up(const CharacterState& character, const Eigen::Vector3d& look) const;
+  // The cheapest usable short move (see the header comment), if any.
+  // `step` is where the spring would have gone.
+  std::optional<Eigen::Vector3d> smooth_escape(const Eigen::Vector3d& look,
+                                               const Eigen::Vector3d& step, double dt) const;
 
   const Scene* scene_;
   ChaseCameraOptions options_;
