@@ -10,12 +10,17 @@
 //
 // Movers are few (people, doors, vehicles) next to the static geometry, so they sit in a
 // flat array beside the static index, tested after one reject against their common bounds,
-// rather than in a BVH refit every frame: measured in docs/BENCHMARKS.md ("Movers").
+// rather than in a BVH refit every frame: measured in docs/BENCHMARKS.md ("Movers"). Movers
+// spread over a whole city make those common bounds useless, so set_time() also sorts them
+// along the bounds' longest axis into groups of kGroupSize with their own bounds (one level
+// of hierarchy, rebuilt per set_time in O(n log n) without allocating), and every query
+// skips the groups it cannot touch.
 // set_time() and the queries do not allocate; the constructor sizes everything once.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -58,11 +63,17 @@ class SceneAtTime {
   bool mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
  private:
+  static constexpr std::size_t kGroupSize = 4;
+  // Sorts the movers into groups and computes bounds_ and the groups' bounds.
+  void regroup();
+
   const Scene* scene_;
   double time_ = 0;
   std::vector<Aabb> boxes_;
   std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
   Aabb bounds_ = Aabb::empty();        // of boxes_
+  std::vector<std::uint32_t> order_;   // mover indices, grouped
+  std::vector<Aabb> group_bounds_;     // of order_[g * kGroupSize ...]
 };
 
 }  // namespace sightline::camera

@@ -41,6 +41,13 @@ ChaseCamera::ChaseCamera(const Scene& scene, const CameraProfile& profile,
     throw std::invalid_argument("solver '" + options_.solver + "' cannot drive the camera: " + why);
   }
   context_.want_breakdown = false;
+  // The escape's pricing: constraints that ask the geometry last (see smooth_escape).
+  const CameraProblem::ConstraintIds& ids = problem_.ids();
+  for (csp::ConstraintId id = 0; id < problem_.problem().num_constraints(); ++id) {
+    if (id == ids.look_at || id == ids.clearance) continue;  // 0 for every usable move
+    const bool sighted = id == ids.visible_fraction || id == ids.future_visible;
+    (sighted ? sighted_ids_ : cheap_ids_).push_back(id);
+  }
   reset(scene.start_camera_position());
 }
 
@@ -142,31 +149,45 @@ std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d&
   // the camera's velocity, so among usable moves the one closest to the spring's step (the
   // smoothest) wins unless another is clearly better placed. Staying is priced the same way
   // when it is usable, and a move must beat it.
+  // The price is this frame's soft cost (the usable moves break no hard constraint), the
+  // constraints without sight lines first, so most moves are dropped before any query.
   constexpr double kVelocityChangeCost = 0.1;
   const double reach = max_step(dt) * (1 + 1e-9);
-  auto price = [&](const Eigen::Vector3d& next) {
-    const double values[3] = {next.x(), next.y(), next.z()};
-    return problem_.problem().cost(values) +
-           kVelocityChangeCost * ((next - position_) / dt - velocity_).norm();
+  const csp::Problem& problem = problem_.problem();
+  auto soft_cost = [&](const std::vector<csp::ConstraintId>& ids, const double* values) {
+    double sum = 0;
+    for (csp::ConstraintId id : ids) {
+      const csp::Constraint& c = problem.constraint(id);
+      if (!c.is_hard()) sum += c.weight() * c.violation(std::span<const double>(values, 3));
+    }
+    return sum;
   };
   std::optional<Eigen::Vector3d> best;
-  double best_cost = usable(position_, look) ? price(position_)
-                                             : std::numeric_limits<double>::infinity();
-  auto consider = [&](const Eigen::Vector3d& next) {
+  double best_cost = std::numeric_limits<double>::infinity();
+  auto consider = [&](const Eigen::Vector3d& next, bool staying) {
     if ((next - position_).norm() > reach) return;
-    if (!usable(next, look) || !sees(position_, next)) return;
-    const double cost = price(next);
+    const double values[3] = {next.x(), next.y(), next.z()};
+    double cost = soft_cost(cheap_ids_, values) +
+                  kVelocityChangeCost * ((next - position_) / dt - velocity_).norm();
+    if (cost >= best_cost) return;
+    if (!usable(next, look) || (!staying && !sees(position_, next))) return;
+    cost += soft_cost(sighted_ids_, values);
     if (cost < best_cost) {
       best_cost = cost;
-      best = next;
+      best = staying ? std::nullopt : std::optional<Eigen::Vector3d>(next);
     }
   };
+  consider(position_, true);
   for (const Eigen::Vector3d& centre : {step, position_}) {
     for (double length : {0.125, 0.25, 0.5, 1.0}) {
-      for (const Eigen::Vector3d& d : directions) consider(centre + length * max_step(dt) * d);
+      for (const Eigen::Vector3d& d : directions) {
+        consider(centre + length * max_step(dt) * d, false);
+      }
     }
   }
-  for (double fraction : {0.75, 0.5, 0.25}) consider(position_ + fraction * (step - position_));
+  for (double fraction : {0.75, 0.5, 0.25}) {
+    consider(position_ + fraction * (step - position_), false);
+  }
   return best;
 }
 

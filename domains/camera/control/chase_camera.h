@@ -35,6 +35,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "domains/camera/camera_problem.h"
 #include "domains/camera/control/camera_controller.h"
@@ -123,6 +124,8 @@ class ChaseCamera : public CameraController {
   bool was_backed_up_ = false;
   std::uint64_t frames_ = 0;
   CameraFrame frame_;
+  // Constraint ids for pricing escape moves: without sight lines, and with them.
+  std::vector<csp::ConstraintId> cheap_ids_, sighted_ids_;
 };
 
 }  // namespace sightline::camera

@@ -229,6 +229,61 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   EXPECT_EQ(thesis.cuts, CutPolicy{});
 }
 
+// SceneAtTime's grouped movers answer as every mover tested one by one would: many movers
+// spread over a wide area, random segments and points, at times set and extrapolated.
+TEST(SceneAtTime, GroupedMoversAnswerLikeTestingEveryMover) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(-40, 40), s(0.3, 3), t(0, 10);
+  std::vector<SolidBox> solids = {{"wall", {{-5, 0, -5}, {5, 3, -4.8}}, {}}};
+  std::vector<Mover> movers;
+  for (int i = 0; i < 23; ++i) {
+    const Vector3d from(u(rng), 0, u(rng)), to(u(rng), 0, u(rng));
+    movers.emplace_back("m", Vector3d(s(rng), s(rng), s(rng)),
+                        std::vector<MoverKeyframe>{{0, from}, {10, to}});
+  }
+  Scene scene("many", std::move(solids), {}, {}, Trajectory({{0, {0, 0, 0}, 0}}));
+  scene.set_movers(movers);
+  SceneAtTime at(scene);
+  for (int trial = 0; trial < 300; ++trial) {
+    const double now = t(rng), ahead = 0.5 * (trial % 3);
+    if (ahead == 0) {
+      at.set_time(now);
+    } else {
+      at.set_time_extrapolated(now, ahead);
+    }
+    std::vector<std::pair<Vector3d, Vector3d>> boxes;  // the test's own mover boxes
+    for (const Mover& m : movers) {
+      const auto& k = m.path();
+      const Vector3d v = (k[1].position - k[0].position) / 10;
+      const Vector3d base = k[0].position + (now + ahead) * v;
+      boxes.push_back({base - Vector3d(m.size().x() / 2, 0, m.size().z() / 2),
+                       base + Vector3d(m.size().x() / 2, m.size().y(), m.size().z() / 2)});
+    }
+    for (int q = 0; q < 20; ++q) {
+      const Vector3d a(u(rng), std::abs(u(rng)) / 10, u(rng)), b(u(rng), std::abs(u(rng)) / 10, u(rng));
+      bool blocked = slab_meets(a, b, {-5, 0, -5}, {5, 3, -4.8});
+      double nearest = INFINITY;
+      bool in_mover = false;
+      for (const auto& [lo, hi] : boxes) {
+        blocked = blocked || slab_meets(a, b, lo, hi);
+        nearest = std::min(nearest, Aabb{lo, hi}.signed_distance(a));
+        in_mover = in_mover || inside(a, lo, hi);
+      }
+      ASSERT_EQ(at.line_of_sight(a, b), !blocked) << trial;
+      ASSERT_EQ(at.first_hit(a, b).has_value(), blocked) << trial;
+      const double static_d = scene.clearance(a, 2.0);
+      EXPECT_NEAR(at.clearance(a, 2.0), std::min({static_d, nearest, 2.0}), 1e-12);
+      EXPECT_EQ(at.open_at(a), scene.open_at(a) && !in_mover);
+      const auto n = at.nearest_surface(a, 2.0);
+      const double expected = std::min(static_d, nearest);
+      ASSERT_EQ(n.has_value(), expected < 2.0);
+      if (n) {
+        EXPECT_NEAR(n->signed_distance, expected, 1e-12);
+      }
+    }
+  }
+}
+
 CameraProfile parse(const std::string& text) {
   return parse_profile(csp::parse_yaml(text, "profile.yaml"));
 }
