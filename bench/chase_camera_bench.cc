@@ -106,20 +106,23 @@ void add_crossing_movers(Scene& scene, int count, std::uint64_t seed) {
   scene.set_movers(std::move(movers));
 }
 
-// The anticipating camera (preset `anticipating`) on the city with 20 crossing movers.
+// The city with crossing movers (range 1), followed by the anticipating camera (range 2 = 1,
+// preset `anticipating`) or the reactive one (0, thesis-default) for comparison.
 void BM_AnticipatingFrame(benchmark::State& state) {
   sightline::experiments::GeneratedSceneOptions options;
   options.boxes = static_cast<std::size_t>(state.range(0));
   options.seed = 1;
   Scene scene = sightline::experiments::generate_city(options);
   add_crossing_movers(scene, static_cast<int>(state.range(1)), 7);
-  walk(state, scene, "occlusion-octree", sightline::camera::preset_profile("anticipating"));
+  walk(state, scene, "occlusion-octree",
+       sightline::camera::preset_profile(state.range(2) ? "anticipating" : "thesis-default"));
   state.counters["movers"] = static_cast<double>(scene.movers().size());
 }
 
 BENCHMARK(BM_AnticipatingFrame)
-    ->Args({1000, 0})
-    ->Args({1000, 20})
+    ->Args({1000, 0, 1})
+    ->Args({1000, 20, 1})
+    ->Args({1000, 20, 0})
     ->Iterations(3)
     ->Unit(benchmark::kMillisecond);
 
