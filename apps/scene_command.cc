@@ -1,5 +1,5 @@
 // `sightline scene check SCENE.yaml`: reads and validates a scene file (docs/CAMERA.md) and
-// prints its summary: boxes, areas, character, duration, frames, camera and profile. A bad
+// prints its summary: boxes, areas, movers, character, duration, frames, camera and profile. A bad
 // file is an InputError ("FILE:LINE:COL: what was expected"), which main turns into a
 // message and exit status 2.
 #include <iostream>
@@ -61,6 +61,25 @@ void check_scene(const std::string& path) {
               << " semi-enclosed: " << names;
   }
   std::cout << "\n";
+  // Movers: how many, then one line each (name, size, time span of the path), at most 20.
+  std::cout << "  movers:     " << plural(scene.movers().size(), "mover") << "\n";
+  constexpr std::size_t kListed = 20;
+  for (std::size_t i = 0; i < scene.movers().size() && i < kListed; ++i) {
+    const camera::Mover& m = scene.movers()[i];
+    const Eigen::Vector3d& s = m.size();
+    std::cout << "    " << (m.name().empty() ? "mover #" + std::to_string(i + 1) : m.name())
+              << " (line " << m.where().line << "): " << s.x() << " x " << s.y() << " x "
+              << s.z() << " m, " << plural(m.path().size(), "keyframe");
+    if (m.path().size() == 1) {
+      std::cout << ", standing at " << vec(m.path().front().position);
+    } else {
+      std::cout << ", t = " << m.path().front().t << " .. " << m.path().back().t << " s";
+    }
+    std::cout << "\n";
+  }
+  if (scene.movers().size() > kListed) {
+    std::cout << "    ... and " << scene.movers().size() - kListed << " more\n";
+  }
   const camera::CharacterShape& c = scene.character();
   std::cout << "  character:  " << c.size.x() << " x " << c.size.y() << " x " << c.size.z()
             << " m, looking at " << c.look_at_height << " m above the feet\n";

@@ -1,14 +1,41 @@
 #include "experiments/camera_run.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace sightline::experiments {
+namespace {
+
+// The trace's word for a cut reason (trace.h): short, no commas.
+const char* cut_reason_word(camera::CutReason reason) {
+  switch (reason) {
+    case camera::CutReason::kNone: return "none";
+    case camera::CutReason::kLeftEnclosedArea: return "left-enclosed-area";
+    case camera::CutReason::kBackedUpToObstacle: return "backed-up-to-obstacle";
+    case camera::CutReason::kVisibilityLost: return "visibility-lost";
+    case camera::CutReason::kStuck: return "stuck";
+    case camera::CutReason::kTooFast: return "too-fast";
+  }
+  return "unknown";
+}
+
+}  // namespace
 
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
                            double max_step) {
   MetricsInput input;
   input.boxes.reserve(scene.solids().size());
   for (const auto& solid : scene.solids()) input.boxes.push_back({solid.box.min, solid.box.max});
+  // Movers as plain keyframes: the metrics interpolate them with their own code.
+  input.movers.reserve(scene.movers().size());
+  for (const camera::Mover& m : scene.movers()) {
+    MovingBox& copy = input.movers.emplace_back();
+    copy.size = m.size();
+    for (const camera::MoverKeyframe& k : m.path()) {
+      copy.times.push_back(k.t);
+      copy.positions.push_back(k.position);
+    }
+  }
   if (const camera::Level* level = scene.level()) {
     input.triangles = std::make_shared<const IndependentTriangles>(level->mesh);
     if (level->solid) {
@@ -47,6 +74,7 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
     row.camera = f.position;
     row.target = f.target;
     row.cut = f.cut;
+    row.cut_reason = cut_reason_word(f.cut_reason);
     row.cost = f.score.soft;
     row.solve_us = f.solve_seconds * 1e6;
     row.controller_visible = f.look_at_visible;
@@ -68,10 +96,22 @@ std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) 
   out.precision(1);
   out << "Scene '" << scene.name() << "' with solver '" << run.solver << "' and profile '"
       << run.profile << "': " << m.frames << " frames; the look-at point was visible in "
-      << visible << " of them (" << m.visible_percent << "%, independent check), the mean "
+      << visible << " of them (" << m.visible_percent << "%, independent check";
+  if (m.occlusion_episodes > 0) {
+    out << "; lost " << m.occlusion_episodes << " time" << (m.occlusion_episodes == 1 ? "" : "s")
+        << ", back in sight after " << std::setprecision(2) << m.recovery_seconds_mean
+        << " s on average, " << m.recovery_seconds_max << " s at worst" << std::setprecision(1);
+  }
+  if (!scene.movers().empty()) {
+    out << ", movers included";
+  }
+  out << "), the mean "
       << "visible fraction of the body " << m.visible_fraction_mean * 100 << "%; " << m.cuts
-      << " cut" << (m.cuts == 1 ? "" : "s") << " and " << m.unflagged_jumps
-      << " unflagged jumps; " << m.clearance_violations
+      << " cut" << (m.cuts == 1 ? "" : "s") << " (" << m.cuts_per_minute << " per minute"
+      << (m.cut_reasons_known && m.cuts > 0
+              ? ", " + std::to_string(m.discretionary_cuts) + " discretionary"
+              : std::string())
+      << ") and " << m.unflagged_jumps << " unflagged jumps (pops); " << m.clearance_violations
       << " frames inside the clearance radius" << (m.solid_frames > 0 ? ", " + std::to_string(m.solid_frames) + " inside solid matter" : std::string()) << "; cost mean " << m.cost_mean << ", max "
       << m.cost_max << "; solve time median " << m.solve_us_p50 << " us, p99 "
       << m.solve_us_p99 << " us; mean deviation from the profile: height "

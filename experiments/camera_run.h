@@ -31,7 +31,7 @@ struct CameraRun {
 CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
                      const camera::ChaseCameraOptions& options);
 
-// The metrics' view of a scene: its boxes, the character's size, the camera's radius and
+// The metrics' view of a scene: its boxes, its movers' keyframes, the character's size, the camera's radius and
 // the controller's smooth-motion bound for one frame (CameraController::max_step).
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
                            double max_step);

@@ -6,6 +6,27 @@
 
 namespace sightline::experiments {
 
+SolidBox moving_box_at(const MovingBox& mover, double t) {
+  // Walk the keyframes from the end: the last one at or before t starts the leg holding t.
+  const std::size_t n = mover.times.size();
+  Eigen::Vector3d base = mover.positions.front();
+  if (t >= mover.times[n - 1]) {
+    base = mover.positions[n - 1];
+  } else if (t > mover.times[0]) {
+    std::size_t k = n - 1;
+    while (mover.times[k] > t) --k;  // stops: times[0] < t
+    const double w = (t - mover.times[k]) / (mover.times[k + 1] - mover.times[k]);
+    base = (1 - w) * mover.positions[k] + w * mover.positions[k + 1];
+  }
+  const Eigen::Vector3d half(mover.size.x() / 2, 0, mover.size.z() / 2);
+  return {base - half, base + half + Eigen::Vector3d(0, mover.size.y(), 0)};
+}
+
+void moving_boxes_at(const std::vector<MovingBox>& movers, double t, std::vector<SolidBox>& out) {
+  out.clear();
+  for (const MovingBox& m : movers) out.push_back(moving_box_at(m, t));
+}
+
 bool segment_blocked(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& a,
                      const Eigen::Vector3d& b) {
   const Eigen::Vector3d d = b - a;

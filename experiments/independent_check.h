@@ -16,6 +16,21 @@ struct SolidBox {
   Eigen::Vector3d min, max;
 };
 
+// A mover (FORMATS.md `movers:`) as the independent checks see it: its size and keyframes
+// copied as plain numbers and interpolated here, not by the camera domain's Mover, so a bug
+// in how the camera places movers cannot hide itself from the metrics.
+struct MovingBox {
+  Eigen::Vector3d size{1, 1, 1};           // extents; the origin is the centre of the base
+  std::vector<double> times;               // strictly increasing, at least one
+  std::vector<Eigen::Vector3d> positions;  // the base centre at each time
+};
+// The box a mover fills at time t: its base centre moves linearly between keyframes and
+// stays at the first (last) keyframe before (after) them; it spans position - [sx/2, 0, sz/2]
+// to position + [sx/2, sy, sz/2].
+SolidBox moving_box_at(const MovingBox& mover, double t);
+// The boxes of all movers at time t, into `out` (cleared first).
+void moving_boxes_at(const std::vector<MovingBox>& movers, double t, std::vector<SolidBox>& out);
+
 // True when the closed segment a-b meets any box (closed boxes: touching a face counts).
 // Liang-Barsky clipping of the segment against each box in turn.
 bool segment_blocked(const std::vector<SolidBox>& boxes, const Eigen::Vector3d& a,

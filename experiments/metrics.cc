@@ -15,25 +15,50 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + (rank - lo) * (values[hi] - values[lo]);
 }
 
+namespace {
+
+// The geometry of one frame: the input's static boxes and triangles plus the movers' boxes at
+// that frame's time, computed once per frame.
+struct FrameGeometry {
+  const MetricsInput& input;
+  std::vector<SolidBox> movers;
+
+  FrameGeometry(const MetricsInput& in, double t) : input(in) {
+    moving_boxes_at(in.movers, t, movers);
+  }
+  bool blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    return segment_blocked(input.boxes, a, b) || segment_blocked(movers, a, b) ||
+           (input.triangles && input.triangles->segment_blocked(a, b));
+  }
+  double distance(const Eigen::Vector3d& p) const {
+    double d = std::min(distance_to_geometry(input.boxes, p), distance_to_geometry(movers, p));
+    if (input.triangles) d = input.triangles->distance(p, d);
+    return d;
+  }
+  double body_fraction(const Eigen::Vector3d& eye, const Eigen::Vector3d& feet) const {
+    const std::vector<Eigen::Vector3d> points = body_check_points(feet, input.character_size);
+    int visible = 0;
+    for (const Eigen::Vector3d& p : points) visible += !blocked(eye, p);
+    return static_cast<double>(visible) / static_cast<double>(points.size());
+  }
+};
+
+constexpr const char* kForcedCutReason = "visibility-lost";
+
+}  // namespace
+
 bool segment_blocked(const MetricsInput& input, const Eigen::Vector3d& a,
-                     const Eigen::Vector3d& b) {
-  return segment_blocked(input.boxes, a, b) ||
-         (input.triangles && input.triangles->segment_blocked(a, b));
+                     const Eigen::Vector3d& b, double t) {
+  return FrameGeometry(input, t).blocked(a, b);
 }
 
-double distance_to_geometry(const MetricsInput& input, const Eigen::Vector3d& p) {
-  double d = distance_to_geometry(input.boxes, p);
-  if (input.triangles) d = input.triangles->distance(p, d);
-  return d;
+double distance_to_geometry(const MetricsInput& input, const Eigen::Vector3d& p, double t) {
+  return FrameGeometry(input, t).distance(p);
 }
 
 double visible_body_fraction(const MetricsInput& input, const Eigen::Vector3d& eye,
-                             const Eigen::Vector3d& feet) {
-  if (!input.triangles) return visible_body_fraction(input.boxes, eye, feet, input.character_size);
-  const std::vector<Eigen::Vector3d> points = body_check_points(feet, input.character_size);
-  int visible = 0;
-  for (const Eigen::Vector3d& p : points) visible += !segment_blocked(input, eye, p);
-  return static_cast<double>(visible) / static_cast<double>(points.size());
+                             const Eigen::Vector3d& feet, double t) {
+  return FrameGeometry(input, t).body_fraction(eye, feet);
 }
 
 RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInput& input) {
@@ -49,19 +74,33 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
   double height_sum = 0, distance_sum = 0, orientation_sum = 0, cost_sum = 0;
   std::vector<double> solve_us;
   solve_us.reserve(trace.size());
+  // Recovery: from the first hidden frame of an episode to the next visible frame.
+  double lost_at = 0, recovery_sum = 0;
+  int recoveries = 0;
+  auto recovered = [&](double seconds) {
+    m.recovery_seconds_max = std::max(m.recovery_seconds_max, seconds);
+    recovery_sum += seconds;
+    ++recoveries;
+  };
+  m.cut_reasons_known = true;
   for (const TraceRow& r : trace) {
-    const bool hidden = segment_blocked(input, r.camera, r.target);
+    const FrameGeometry world(input, r.t);
+    const bool hidden = world.blocked(r.camera, r.target);
     if (hidden) {
-      if (current_occlusion++ == 0) ++m.occlusion_episodes;
+      if (current_occlusion++ == 0) {
+        ++m.occlusion_episodes;
+        lost_at = r.t;
+      }
       m.longest_occlusion_frames = std::max(m.longest_occlusion_frames, current_occlusion);
     } else {
+      if (current_occlusion > 0) recovered(r.t - lost_at);
       ++visible_frames;
       current_occlusion = 0;
     }
-    const double fraction = visible_body_fraction(input, r.camera, r.character);
+    const double fraction = world.body_fraction(r.camera, r.character);
     fraction_sum += fraction;
     m.visible_fraction_min = std::min(m.visible_fraction_min, fraction);
-    const double clearance = distance_to_geometry(input, r.camera);
+    const double clearance = world.distance(r.camera);
     if (input.solid_at && input.solid_at(r.camera)) ++m.solid_frames;
     m.min_clearance = std::min(m.min_clearance, clearance);
     // A small tolerance: positions are written with 4 decimals.
@@ -83,7 +122,25 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
     cost_sum += r.cost;
     m.cost_max = std::max(m.cost_max, r.cost);
     solve_us.push_back(r.solve_us);
-    if (r.cut) ++m.cuts;
+    if (r.cut_reason.empty()) m.cut_reasons_known = false;
+    if (r.cut) {
+      ++m.cuts;
+      if (r.cut_reason == kForcedCutReason) ++m.forced_cuts;
+      else ++m.discretionary_cuts;
+    }
+  }
+  if (current_occlusion > 0) {
+    // Still hidden at the end: count until one frame after the last (a lower bound).
+    const double frame = trace.size() > 1 ? trace.back().t - trace[trace.size() - 2].t : 0;
+    recovered(trace.back().t + frame - lost_at);
+  }
+  m.recovery_seconds_mean = recoveries > 0 ? recovery_sum / recoveries : 0;
+  if (!m.cut_reasons_known) m.forced_cuts = m.discretionary_cuts = 0;
+  m.duration_seconds = trace.back().t - trace.front().t;
+  const double minutes = m.duration_seconds / 60;
+  if (minutes > 0) {
+    m.cuts_per_minute = m.cuts / minutes;
+    m.discretionary_cuts_per_minute = m.discretionary_cuts / minutes;
   }
   const double n = static_cast<double>(trace.size());
   m.visible_percent = 100.0 * visible_frames / n;
@@ -143,10 +200,13 @@ std::vector<std::string> metric_names() {
           "speed_max",        "jerk_p99",           "height_dev_mean",
           "distance_dev_mean", "orientation_dev_mean", "cost_mean",
           "cost_max",         "solve_us_p50",       "solve_us_p99",
-          "solve_us_max",     "solid_frames"};
+          "solve_us_max",     "solid_frames",       "cuts_per_minute",
+          "forced_cuts",      "discretionary_cuts", "discretionary_cuts_per_minute",
+          "recovery_s_max",   "recovery_s_mean",    "duration_s"};
 }
 
 std::vector<double> metric_values(const RunMetrics& m) {
+  const double kUnknown = std::numeric_limits<double>::quiet_NaN();
   return {static_cast<double>(m.frames), m.visible_percent, m.visible_fraction_mean,
           m.visible_fraction_min, static_cast<double>(m.occlusion_episodes),
           static_cast<double>(m.longest_occlusion_frames),
@@ -155,7 +215,12 @@ std::vector<double> metric_values(const RunMetrics& m) {
           static_cast<double>(m.unflagged_jumps), m.speed_p99, m.speed_max, m.jerk_p99,
           m.height_deviation_mean, m.distance_deviation_mean, m.orientation_deviation_mean,
           m.cost_mean, m.cost_max, m.solve_us_p50, m.solve_us_p99, m.solve_us_max,
-          static_cast<double>(m.solid_frames)};
+          static_cast<double>(m.solid_frames), m.cuts_per_minute,
+          // Unknown without a cut_reason column: NaN, which results.csv writes as "nan".
+          m.cut_reasons_known ? static_cast<double>(m.forced_cuts) : kUnknown,
+          m.cut_reasons_known ? static_cast<double>(m.discretionary_cuts) : kUnknown,
+          m.cut_reasons_known ? m.discretionary_cuts_per_minute : kUnknown,
+          m.recovery_seconds_max, m.recovery_seconds_mean, m.duration_seconds};
 }
 
 }  // namespace sightline::experiments

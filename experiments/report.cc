@@ -219,7 +219,7 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
   }
   for (const SuiteScene& scene : suite.scenes) {
     std::vector<LoadedRun> runs;
-    // The independent check, boxes and a level's triangles alike (the clearance radius and
+    // The independent check, boxes, movers at each row's time and a level's triangles alike (the clearance radius and
     // smooth step do not matter for these two questions).
     const MetricsInput world = metrics_input(*scene.scene, scene.scene->profile(), 0);
     for (const RunResult& r : outcome.results) {
@@ -236,8 +236,10 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
         loaded.trace.clear();
       }
       for (const TraceRow& row : loaded.trace) {
-        loaded.drawing.occluded.push_back(segment_blocked(world, row.camera, row.target) ? 1 : 0);
-        loaded.visible_fraction.push_back(visible_body_fraction(world, row.camera, row.character));
+        loaded.drawing.occluded.push_back(
+            segment_blocked(world, row.camera, row.target, row.t) ? 1 : 0);
+        loaded.visible_fraction.push_back(
+            visible_body_fraction(world, row.camera, row.character, row.t));
       }
       runs.push_back(std::move(loaded));
     }

@@ -69,11 +69,15 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
     out << "### Camera solvers over all scenes\n\n"
            "Visibility is judged by the independent brute-force check. Means over runs, "
            "except: occlusion episodes, clearance frames, frames in solid matter (a level's "
-           "brushes) and cuts are totals; longest occlusion and p99 solve time are the worst "
-           "run's.\n\n";
+           "brushes), cuts and pops (moves beyond the smooth-motion bound without a cut flag) "
+           "are totals; cuts per minute are over the total walk time; longest occlusion, "
+           "longest recovery and p99 solve time are the worst run's. Discretionary cuts are "
+           "those for any reason but lost visibility (- when a trace does not say).\n\n";
     Table t{{"solver", "runs", "frames", "look-at visible %", "body visible (mean)",
              "body visible (min)", "occlusion episodes", "longest occlusion (frames)",
-             "clearance frames", "in solid frames", "cuts", "speed p99 m/s", "jerk p99 m/s^3", "cost mean",
+             "clearance frames", "in solid frames", "cuts", "cuts / min",
+             "discretionary cuts / min", "pops", "recovery max s", "speed p99 m/s",
+             "jerk p99 m/s^3", "cost mean",
              "solve p50 us", "solve p99 us (worst)"},
             {}};
     for (const std::string& key : solver_order) {
@@ -93,6 +97,11 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
         for (const RunResult* r : rs) w = largest ? std::max(w, value(*r, m)) : std::min(w, value(*r, m));
         return w;
       };
+      // Per minute over all the runs' walk time, so long walks weigh by their length.
+      const double minutes = total("duration_s") / 60;
+      auto per_minute = [&](const std::string& count) {
+        return minutes > 0 ? total(count) / minutes : 0.0;
+      };
       t.rows.push_back({key, std::to_string(rs.size()), fixed(total("frames"), 0),
                         fixed(mean("visible_pct"), 1), fixed(mean("visible_fraction_mean"), 3),
                         fixed(worst("visible_fraction_min", false), 3),
@@ -100,6 +109,9 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
                         fixed(worst("longest_occlusion_frames", true), 0),
                         fixed(total("clearance_violations"), 0),
                         fixed(total("solid_frames"), 0), fixed(total("cuts"), 0),
+                        fixed(per_minute("cuts"), 2), fixed(per_minute("discretionary_cuts"), 2),
+                        fixed(total("unflagged_jumps"), 0),
+                        fixed(worst("recovery_s_max", true), 2),
                         fixed(mean("speed_p99"), 2), fixed(mean("jerk_p99"), 0),
                         fixed(mean("cost_mean"), 3), fixed(mean("solve_us_p50"), 0),
                         fixed(worst("solve_us_p99", true), 0)});

@@ -4,7 +4,9 @@
 //   frame,t,char_x,char_y,char_z,char_yaw,cam_x,cam_y,cam_z,target_x,target_y,target_z,cut,cost,solve_us
 // then the columns this project adds (the format allows more after those): the
 // controller's own visibility flag and the profile's desired values that frame, so metrics
-// can measure deviation from what the camera was asked to do, even inside areas.
+// can measure deviation from what the camera was asked to do, even inside areas; and last
+// the cut's reason, a word ("none" on frames without a cut), so metrics can tell forced cuts
+// from discretionary ones.
 #pragma once
 
 #include <Eigen/Core>
@@ -28,6 +30,10 @@ struct TraceRow {
   double desired_height = 0;        // metres above the feet
   double desired_distance = 0;      // metres, horizontal
   double desired_orientation = 0;   // degrees
+  // Why the camera cut: "none", "left-enclosed-area", "backed-up-to-obstacle",
+  // "visibility-lost", "stuck", "too-fast" (camera_run.cc names them). Empty when the trace
+  // does not say (a file without the cut_reason column).
+  std::string cut_reason;
 };
 
 // The header line, without a trailing newline.
@@ -36,7 +42,8 @@ std::string trace_header();
 // renamed. Throws std::runtime_error naming the path on failure.
 void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows);
 // Reads a trace written by write_trace_csv (or any CSV with at least the fifteen public
-// columns, in order). Throws csp::InputError naming the file and line on malformed input.
+// columns, in order; a later column named cut_reason is read as a word, every other cell
+// must be a number). Throws csp::InputError naming the file and line on malformed input.
 std::vector<TraceRow> read_trace_csv(const std::string& path);
 
 }  // namespace sightline::experiments

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 
 #include "csp/files/yaml_spec.h"
 #include "domains/camera/camera_problem.h"
@@ -87,6 +88,68 @@ std::vector<Area> read_areas(const Spec& spec) {
     areas.push_back(std::move(area));
   }
   return areas;
+}
+
+// The `movers:` block (FORMATS.md): boxes of a fixed size moving on their own keyframes.
+// Names are labels as for boxes (optional, may repeat); unknown fields are refused as for
+// boxes. One keyframe is a mover that stands still.
+std::vector<Mover> read_movers(const Spec& spec) {
+  std::vector<Mover> movers;
+  for (const Spec& entry : optional_list(spec, "movers", "a list of movers")) {
+    if (!entry.is_map()) {
+      entry.fail("expected a mover {name: ..., size: [sx, sy, sz], path: [{t: s, position: "
+                 "[x, y, z]}, ...]}, got " + entry.preview());
+    }
+    entry.check_keys({"name", "size", "path"});
+    std::string name;
+    if (const Spec* n = entry.find("name")) name = n->as_string("a mover name");
+    const std::string what = name.empty() ? "mover #" + std::to_string(movers.size() + 1)
+                                          : "mover '" + name + "'";
+    const Spec& size_field = entry.at("size");
+    const Eigen::Vector3d size = read_vector3(size_field, "the size of " + what);
+    static const char* kAxis[] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i) {
+      if (!(size[i] > 0)) {
+        size_field.fail("expected the size of " + what + " as 3 numbers > 0, but on " +
+                        kAxis[i] + " it is " + format_number(size[i]));
+      }
+    }
+    const Spec& path_field = entry.at("path");
+    // "path:" with nothing after it: a null placed where the next token starts, often on a
+    // later line, so the mover's own line is the better place to name.
+    if (path_field.is_null()) entry.fail("expected at least one keyframe in the path of " + what);
+    std::vector<MoverKeyframe> path;
+    std::vector<int> lines;  // of each keyframe, to name both when times do not increase
+    for (const Spec& key : path_field.items("the path of " + what +
+                                            " as a list of keyframes {t: s, position: [x, y, z]}")) {
+      const std::string key_what =
+          "keyframe #" + std::to_string(path.size() + 1) + " of " + what;
+      if (!key.is_map()) {
+        key.fail("expected " + key_what + " as {t: s, position: [x, y, z]}, got " + key.preview());
+      }
+      key.check_keys({"t", "position"});
+      MoverKeyframe k;
+      const Spec& t = key.at("t");
+      k.t = t.as_number("the time of " + key_what + " (seconds)");
+      if (!path.empty() && !(k.t > path.back().t)) {
+        t.fail("expected the keyframe times of " + what + " to increase strictly: keyframe #" +
+               std::to_string(path.size() + 1) + " (line " + std::to_string(key.where().line) +
+               ") has t = " + format_number(k.t) + " but keyframe #" +
+               std::to_string(path.size()) + " (line " + std::to_string(lines.back()) +
+               ") has t = " + format_number(path.back().t));
+      }
+      k.position = read_vector3(key.at("position"), "the position of " + key_what);
+      path.push_back(k);
+      lines.push_back(key.where().line);
+    }
+    if (path.empty()) path_field.fail("expected at least one keyframe in the path of " + what);
+    try {
+      movers.emplace_back(std::move(name), size, std::move(path), entry.where());
+    } catch (const std::invalid_argument& e) {
+      entry.fail(std::string("a bad ") + what + ": " + e.what());  // checked above; defence
+    }
+  }
+  return movers;
 }
 
 // The `level:` block (FORMATS.md): the file relative to the scene's folder, an optional
@@ -206,7 +269,7 @@ void check_trajectory(const Scene& scene, const std::vector<csp::SourceLocation>
 Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   if (!spec.is_map()) spec.fail("expected a scene (a mapping with name, boxes, trajectory ...)");
   spec.check_keys({"name", "description", "frame_rate", "character", "level", "boxes", "areas",
-                   "trajectory", "camera"});
+                   "movers", "trajectory", "camera"});
   const std::string name = spec.at("name").as_string("the scene's name");
   if (name.empty()) spec.at("name").fail("expected a non-empty scene name");
   double frame_rate = 60;
@@ -216,6 +279,7 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   CharacterShape character = read_character(spec);
   std::vector<SolidBox> solids = read_solids(spec);
   std::vector<Area> areas = read_areas(spec);
+  std::vector<Mover> movers = read_movers(spec);
   std::vector<csp::SourceLocation> keyframe_where;
   Trajectory trajectory(read_keyframes(spec, keyframe_where));
   if (trajectory.duration() * frame_rate > kMaxSceneFrames) {
@@ -229,6 +293,7 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   Scene scene(name, std::move(solids), std::move(areas), character, std::move(trajectory),
               frame_rate);
   scene.set_level(std::move(level));
+  scene.set_movers(std::move(movers));
   if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
 
   const Spec* camera = spec.find("camera");

@@ -2,7 +2,9 @@
 //
 // Every problem is an InputError naming the file, the line and what was expected: unknown
 // fields, missing required ones, non-finite numbers, boxes with min >= max on some axis,
-// keyframe times that do not increase, a frame rate <= 0, an unknown profile. A trajectory
+// keyframe times that do not increase, a frame rate <= 0, an unknown profile; movers with a
+// size not > 0 on every axis, an empty path, or keyframe times that do not increase strictly
+// (naming both keyframes' lines). Movers are never checked against the character. A trajectory
 // that puts the character's body inside a solid box is rejected naming the keyframe (or the
 // two keyframes around the first bad frame, when the body passes through a box between them);
 // touching a box, as standing on a floor or leaning on a wall, is fine. A camera start inside

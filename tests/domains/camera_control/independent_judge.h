@@ -25,10 +25,10 @@ inline Violations independent_violations(const camera::Scene& scene,
   Violations v;
   for (std::size_t i = 0; i < run.trace.size(); ++i) {
     const auto& row = run.trace[i];
-    if (experiments::segment_blocked(input, row.camera, row.target)) {
+    if (experiments::segment_blocked(input, row.camera, row.target, row.t)) {
       if (v.hidden++ < 5) ADD_FAILURE() << "look-at hidden at frame " << i << " t=" << row.t;
     }
-    if (experiments::distance_to_geometry(input, row.camera) <
+    if (experiments::distance_to_geometry(input, row.camera, row.t) <
         scene.profile().clearance_radius - 1e-6) {
       if (v.too_close++ < 5) ADD_FAILURE() << "camera within clearance at frame " << i << " t=" << row.t;
     }
