@@ -118,7 +118,9 @@ void scene_section(std::ostringstream& out, const SuiteScene& scene,
   out << "<p class='legend'>Blue: the character's path and facing; coloured: the camera's path "
          "and view direction (arrows about once a second); red dots: frames whose look-at point "
          "is hidden (independent check); circles: cuts; dashed: areas (green enclosed, teal "
-         "semi-enclosed); boxes darker when taller.</p><div class='runs'>";
+         "semi-enclosed); boxes darker when taller; amber: movers (faint: where they go; solid: "
+         "where they were, near the character, when an occlusion began or the camera cut, "
+         "labelled with the time).</p><div class='runs'>";
   for (LoadedRun& r : runs) {
     out << "<div class='run'><h4 style='color:" << r.drawing.colour << "'>"
         << html_escape(r.result->solver) << " / " << html_escape(r.result->profile) << " / seed "

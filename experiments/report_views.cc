@@ -12,6 +12,9 @@
 #include <limits>
 #include <sstream>
 
+#include "domains/camera/scene_at_time.h"
+#include "experiments/report_movers.h"
+
 namespace sightline::experiments {
 namespace {
 
@@ -196,6 +199,9 @@ std::string plane_view_svg(const camera::Scene& scene, const RunDrawing& run,
                   shade, shade, shade + 8, view.v_up ? "0.45" : "0.9");
     rect(s->box, style);
   }
+  out << movers_svg(scene, run, [&](const Eigen::Vector3d& p) {
+    return Eigen::Vector2d(view.px(p), view.py(p));
+  });
   // Paths, subsampled to at most ~400 points each.
   const std::size_t stride = std::max<std::size_t>(1, trace.size() / 400);
   auto path = [&](auto point, const std::string& colour, double width) {
@@ -306,6 +312,9 @@ std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const Tra
   const Eigen::Vector3d light = Eigen::Vector3d(0.4, 0.9, 0.3).normalized();
   const camera::Aabb body = scene.character().body_at(row.character);
   const bool has_level = scene.level() != nullptr;
+  // Movers where they were at this frame's time (a SceneAtTime answers for them too).
+  camera::SceneAtTime at(scene);
+  at.set_time(row.t);
   constexpr double kFar = 200;
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
@@ -323,11 +332,13 @@ std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const Tra
         best = -eye.y() / d.y();
         what = 1;
       }
-      if (const auto hit = scene.first_hit(eye, eye + kFar * d); hit && hit->t * kFar < best) {
+      if (const auto hit = at.first_hit(eye, eye + kFar * d); hit && hit->t * kFar < best) {
         best = hit->t * kFar;
         what = 2;
         normal = hit->normal.squaredNorm() > 0 ? hit->normal : Eigen::Vector3d(-d);
-        if (hit->source == camera::SurfaceHit::Source::kBox) {
+        if (hit->source == camera::SurfaceHit::Source::kMover) {
+          base = Eigen::Vector3d(0.40, 0.42, 0.86);  // movers blue, apart from walls and her
+        } else if (hit->source == camera::SurfaceHit::Source::kBox) {
           const unsigned h = static_cast<unsigned>(hit->index) * 2654435761u;
           const double tint = ((h >> 8) & 0xff) / 255.0 * 0.15;
           base = Eigen::Vector3d(0.72 + tint, 0.68 + tint * 0.5, 0.60);

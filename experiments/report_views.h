@@ -4,9 +4,10 @@
 //
 // Top and side views and plots are SVG text (vector drawings of boxes, paths and arrows stay
 // sharp at any zoom and are small); the main camera's view is a ray-cast PNG: one ray per
-// pixel through the scene's BVH (Scene::first_hit), boxes shaded by face (Lambert), the
-// character's body highlighted, a checkered ground. Everything is returned as text or bytes
-// so the report can embed it inline and stay one self-contained file.
+// pixel through the scene at that frame's time (SceneAtTime::first_hit: the static BVH and
+// the movers where they are then), boxes shaded by face (Lambert), the character's body
+// highlighted, a checkered ground. Everything is returned as text or bytes so the report
+// can embed it inline and stay one self-contained file.
 #pragma once
 
 #include <string>
@@ -27,13 +28,15 @@ struct RunDrawing {
 
 // Looking down the y axis: x to the right, z down the picture. Boxes shaded by height,
 // areas dashed, the character's path with facing arrows, the camera's path with arrows
-// toward its target, cuts circled, occluded frames dotted red. `width` in pixels.
+// toward its target, cuts circled, occluded frames dotted red, movers as report_movers.h
+// draws them. `width` in pixels.
 std::string top_view_svg(const camera::Scene& scene, const RunDrawing& run, int width);
 // Looking along z (or x, whichever the character's path spans less): y up.
 std::string side_view_svg(const camera::Scene& scene, const RunDrawing& run, int width);
 
 // The main camera's picture at one frame: eye at row.camera, looking at row.target, y up,
-// 60 degree vertical field of view. A red frame marks a hidden look-at point. PNG bytes.
+// 60 degree vertical field of view, the scene as it is at row.t (movers included, in blue).
+// A red frame marks a hidden look-at point. PNG bytes.
 std::vector<unsigned char> camera_view_png(const camera::Scene& scene, const TraceRow& row,
                                            bool occluded, int width, int height);
 

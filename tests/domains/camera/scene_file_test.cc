@@ -229,10 +229,12 @@ TEST(SceneFile, UnreadableFileIsAnInputError) {
   EXPECT_THROW(read_scene_file("/nonexistent/scene.yaml"), csp::InputError);
 }
 
-// Every scene shipped with the project reads: the examples and the thesis experiments.
+// Every scene shipped with the project reads: the examples, the thesis experiments and the
+// anticipation scenes (issue 13).
 TEST(SceneFile, ShippedScenesAllRead) {
   int read = 0;
-  for (const char* folder : {"/examples/scenes", "/experiments/scenes"}) {
+  for (const char* folder :
+       {"/examples/scenes", "/experiments/scenes", "/experiments/scenes/anticipation"}) {
     const std::filesystem::path dir = std::string(SIGHTLINE_SOURCE_DIR) + folder;
     if (!std::filesystem::exists(dir)) continue;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
