@@ -260,7 +260,6 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     } else if (escape) {
       velocity_ = (*escape - position_) / dt;
       position_ = *escape;
-      set_filtered_target(position_);
       stuck_for_ = 0;
     } else if (usable(position_, look)) {
       velocity_.setZero();
