@@ -193,6 +193,27 @@ std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d&
   return best;
 }
 
+std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look) const {
+  // Rings around the look-at point, nearest first, from behind the character (toward the
+  // camera) round to the front, at and above the look-at height: the first usable one.
+  Eigen::Vector3d back = position_ - look;
+  back.y() = 0;
+  if (back.norm() < 1e-9) back = Eigen::Vector3d::UnitZ();
+  back.normalize();
+  const Eigen::Vector3d side(back.z(), 0, -back.x());
+  for (double distance : {1.0, 1.5, 2.0, 3.0}) {
+    for (double rise : {0.5, 1.0, 0.0, 2.0}) {
+      for (int k = 0; k < 8; ++k) {
+        const double a = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * 0.25 * 3.14159265358979;
+        const Eigen::Vector3d dir = std::cos(a) * back + std::sin(a) * side;
+        const Eigen::Vector3d p = look + distance * dir + Eigen::Vector3d(0, rise, 0);
+        if (usable(p, look)) return p;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 const CameraFrame& ChaseCamera::update(const CharacterState& character, double dt) {
   const auto started = std::chrono::steady_clock::now();
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
@@ -275,7 +296,12 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         cut_to(target, CutReason::kStuck);
       }
     } else {
-      cut_to(target, CutReason::kVisibilityLost);  // forced, whatever the shot's age
+      // Forced, whatever the shot's age. When the solver found nothing usable either (a
+      // vehicle right between camera and character), the escape profiles look close in.
+      if (escapes && !usable(target, look)) {
+        if (const auto close = close_in(look)) target = *close;
+      }
+      cut_to(target, CutReason::kVisibilityLost);
     }
   }
   // A move longer than smooth motion allows is a cut, and flagged as one.

@@ -21,7 +21,9 @@
 //   keeps the look-at point visible and crosses nothing, if it is cheaper than staying (or
 //   staying loses sight). Only then does it stay, and after
 //   stuck_seconds cut (if cuts.stuck), or cut because the look-at point is lost. A game
-//   camera slides along the wall, rises or pulls in before it pops.
+//   camera slides along the wall, rises or pulls in before it pops. If a forced cut has no
+//   usable target from the solver either, these profiles cut to the first usable spot on
+//   rings 1-3 m around the look-at point (close_in) rather than stay hidden.
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -104,6 +106,9 @@ class ChaseCamera : public CameraController {
   void cut_to(const Eigen::Vector3d& p, CutReason reason);
   bool backed_up(const CharacterState& character, const Eigen::Vector3d& look) const;
   // The cheapest usable short move (see the header comment), if any.
+  // For a forced cut the solver could not place: the first usable spot on rings 1-3 m
+  // around the look-at point (escape profiles only), if any.
+  std::optional<Eigen::Vector3d> close_in(const Eigen::Vector3d& look) const;
   // `step` is where the spring would have gone.
   std::optional<Eigen::Vector3d> smooth_escape(const Eigen::Vector3d& look,
                                                const Eigen::Vector3d& step, double dt) const;
