@@ -17,10 +17,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "domains/camera/control/chase_camera.h"
+#include "domains/camera/profile_file.h"
 #include "domains/camera/scene_file.h"
 #include "experiments/camera_run.h"
 #include "experiments/metrics.h"
@@ -46,14 +48,15 @@ double max_of(const std::vector<double>& v) {
 }
 
 // Walks the scene with a fresh camera every iteration; reports per-frame percentiles.
-void walk(benchmark::State& state, const Scene& scene, const std::string& solver) {
+void walk(benchmark::State& state, const Scene& scene, const std::string& solver,
+          const sightline::camera::CameraProfile& profile) {
   ChaseCameraOptions options;
   options.solver = solver;
   std::vector<double> frame_us, frame_cpu_us;
   frame_us.reserve(scene.frame_count() * 8);
   frame_cpu_us.reserve(scene.frame_count() * 8);
   for (auto _ : state) {
-    ChaseCamera camera(scene, scene.profile(), options);
+    ChaseCamera camera(scene, profile, options);
     double previous_t = scene.frame_time(0) - 1.0 / scene.frame_rate();
     for (std::size_t i = 0; i < scene.frame_count(); ++i) {
       const double t = scene.frame_time(i);
@@ -75,6 +78,53 @@ void walk(benchmark::State& state, const Scene& scene, const std::string& solver
   state.counters["cpu_p99_us"] = sightline::experiments::percentile(frame_cpu_us, 99);
   state.counters["cpu_max_us"] = max_of(frame_cpu_us);
 }
+
+void walk(benchmark::State& state, const Scene& scene, const std::string& solver) {
+  walk(state, scene, solver, scene.profile());
+}
+
+// `count` movers (people and carts, seeded) crossing the character's walk at random times,
+// between the character and where the camera follows it.
+void add_crossing_movers(Scene& scene, int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<sightline::camera::Mover> movers;
+  const auto& path = scene.trajectory();
+  for (int i = 0; i < count; ++i) {
+    const double when = path.start_time() + u(rng) * path.duration();
+    const auto at = path.state_at(when);
+    const Eigen::Vector3d behind = at.position - 2.5 * at.facing();
+    const Eigen::Vector3d across(at.facing().z(), 0, -at.facing().x());
+    const double speed = 1 + 3 * u(rng), span = 8;
+    const Eigen::Vector3d size = u(rng) < 0.6 ? Eigen::Vector3d(0.6, 1.8, 0.6)
+                                              : Eigen::Vector3d(2.5, 1.8, 1.2);
+    movers.emplace_back("m" + std::to_string(i), size,
+                        std::vector<sightline::camera::MoverKeyframe>{
+                            {when - span / speed, behind - span * across},
+                            {when + span / speed, behind + span * across}});
+  }
+  scene.set_movers(std::move(movers));
+}
+
+// The city with crossing movers (range 1), followed by the anticipating camera (range 2 = 1,
+// preset `anticipating`) or the reactive one (0, thesis-default) for comparison.
+void BM_AnticipatingFrame(benchmark::State& state) {
+  sightline::experiments::GeneratedSceneOptions options;
+  options.boxes = static_cast<std::size_t>(state.range(0));
+  options.seed = 1;
+  Scene scene = sightline::experiments::generate_city(options);
+  add_crossing_movers(scene, static_cast<int>(state.range(1)), 7);
+  walk(state, scene, "occlusion-octree",
+       sightline::camera::preset_profile(state.range(2) ? "anticipating" : "thesis-default"));
+  state.counters["movers"] = static_cast<double>(scene.movers().size());
+}
+
+BENCHMARK(BM_AnticipatingFrame)
+    ->Args({1000, 0, 1})
+    ->Args({1000, 20, 1})
+    ->Args({1000, 20, 0})
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_ChaseCameraFrame(benchmark::State& state, World world) {
   sightline::experiments::GeneratedSceneOptions options;
@@ -130,6 +180,15 @@ int main(int argc, char** argv) {
           ("BM_LevelWalk/" + std::filesystem::path(path).stem().string()).c_str(),
           [scene](benchmark::State& state) {
             walk(state, *scene, "occlusion-octree");
+            state.counters["triangles"] = static_cast<double>(scene->triangle_index().triangle_count());
+          })
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(
+          ("BM_LevelWalkAnticipating/" + std::filesystem::path(path).stem().string()).c_str(),
+          [scene](benchmark::State& state) {
+            walk(state, *scene, "occlusion-octree",
+                 sightline::camera::preset_profile("anticipating"));
             state.counters["triangles"] = static_cast<double>(scene->triangle_index().triangle_count());
           })
           ->Iterations(1)

@@ -10,8 +10,9 @@
 //   - rebuilt: a BoxTree (the static index's BVH) rebuilt over the movers every frame
 //              (allocates: not allowed on the frame path, shown for scale);
 //   - refit:   a BoxTree built once at the first frame and refitted every frame (its shape
-//              kept, node bounds recomputed): SceneAtTime's choice beyond kFlatMovers.
-// BM_SceneAtTime is what the camera runs (flat up to kFlatMovers, refit beyond).
+//              kept, node bounds recomputed; BoxTree::refit).
+// BM_SceneAtTime is what the camera runs: the flat array sorted every frame into groups of
+// four along the movers' longest axis, each group with its own bounds (scene_at_time.h).
 // Reported per frame (Time column): placement (and build) plus the sight lines.
 #include <benchmark/benchmark.h>
 

@@ -4,10 +4,11 @@
 
 namespace sightline::camera {
 
-AreaProfileSwitch::AreaProfileSwitch(const Scene& scene, const CameraProfile& profile)
-    : scene_(&scene),
+AreaProfileSwitch::AreaProfileSwitch(const SceneAtTime& scene, const CameraProfile& profile)
+    : scene_(&scene.scene()),
       profile_(&profile),
-      senses_(scene.level() != nullptr && scene.areas().empty() && profile.sensing.enabled),
+      senses_(scene.scene().level() != nullptr && scene.scene().areas().empty() &&
+              profile.sensing.enabled),
       sensor_(scene, profile) {
   current_.desired_height = profile.height.desired;
   current_.desired_distance = profile.distance.desired;

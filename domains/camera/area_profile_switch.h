@@ -23,7 +23,7 @@
 #include <optional>
 
 #include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 #include "domains/camera/space_sensor.h"
 
 namespace sightline::camera {
@@ -43,9 +43,10 @@ struct AreaTransition {
 
 class AreaProfileSwitch {
  public:
-  // Both must outlive the switch. Starts outside every area (the first update reports the
+  // Both must outlive the switch. The sensor (levels without areas) probes `scene` at its
+  // current time, so a closed sliding door or a parked bus narrows the room it senses. Starts outside every area (the first update reports the
   // area the character starts in as entered).
-  AreaProfileSwitch(const Scene& scene, const CameraProfile& profile);
+  AreaProfileSwitch(const SceneAtTime& scene, const CameraProfile& profile);
 
   // Recomputes the effective values for the character and reports which area was left and
   // which entered since the previous call (moving straight from one area into another

@@ -6,6 +6,7 @@
 #include "csp/constraint_kinds.h"
 #include "csp/kinds/constraint_entry.h"
 #include "domains/camera/constraints/clearance.h"
+#include "domains/camera/constraints/future_visibility.h"
 #include "domains/camera/constraints/occlusion.h"
 #include "domains/camera/constraints/smooth_constraints.h"
 
@@ -14,8 +15,10 @@ namespace sightline::camera {
 CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
     : scene_(&scene),
       profile_(&profile),
+      at_time_(std::make_unique<SceneAtTime>(scene)),
+      prediction_(std::make_unique<MotionPrediction>(scene, profile.anticipation)),
       problem_(std::make_unique<csp::Problem>("camera: " + scene.name())),
-      areas_(scene, profile) {
+      areas_(*at_time_, profile) {
   if (const std::string error = profile.validate(); !error.empty()) {
     throw std::invalid_argument("camera profile '" + profile.name + "': " + error);
   }
@@ -49,19 +52,24 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
                                  kCamX, kCamY, kCamZ, frame_, profile.frame_coherence_weight),
                              "frame coherence");
   ids_.look_at = add(std::make_unique<LookAtVisibleConstraint>(
-                         kCamX, kCamY, kCamZ, scene, frame_, profile.look_at_weight,
+                         kCamX, kCamY, kCamZ, *at_time_, frame_, profile.look_at_weight,
                          profile.look_at_hard),
                      "look-at visible");
   if (profile.visible_fraction_weight > 0) {
     ids_.visible_fraction =
-        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
                                                        profile.visible_fraction_weight),
             "body visible");
   }
-  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, scene, frame_,
+  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
                                                              profile.clearance_weight,
                                                              profile.clearance_hard),
                        "clearance");
+  if (profile.anticipation.lookahead != Lookahead::kNone && profile.anticipation.weight > 0) {
+    ids_.future_visible = add(std::make_unique<FutureVisibleConstraint>(
+                                  kCamX, kCamY, kCamZ, *prediction_, profile.anticipation.weight),
+                              "future visible");
+  }
   add_extras();
   // A meaningful first frame: the scene's start, one frame interval.
   set_frame(first, start, 1.0 / scene.frame_rate());
@@ -102,6 +110,8 @@ AreaTransition CameraProblem::set_frame(const CharacterState& character,
     throw std::invalid_argument("camera frame interval dt must be > 0");
   }
   character_ = character;
+  at_time_->set_time(character.t);
+  prediction_->update(character);
   const AreaTransition transition = areas_.update(character);
   const EffectiveProfile& e = areas_.current();
   FrameValues values;

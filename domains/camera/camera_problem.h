@@ -10,11 +10,19 @@
 //   hard  camera.look_at_visible (soft when profile.look_at_hard is false)
 //   soft  camera.visible_fraction (left out when its weight is 0)
 //   hard  camera.clearance (soft when profile.clearance_hard is false)
+//   soft  camera.future_visible (with anticipation.lookahead motion or path and a weight
+//         > 0: the predicted look-at points over the horizon, constraints/future_visibility.h)
 //   plus the profile's `extras`, built through csp::ConstraintKinds::global() over the
 //   variables above, reading any frame parameter by name.
 //
 // set_frame() writes the frame into the parameters and the domains: it never adds or removes
 // anything and never allocates, so a solver may keep per-problem state across frames.
+//
+// Geometry: the problem owns a SceneAtTime, set to the character's time by set_frame(), and
+// every constraint that asks the geometry (look-at visible, body visible, clearance) asks
+// it, so movers count at the frame's time. Nothing here asks Scene's static-only queries.
+// The problem also owns the MotionPrediction the future-visibility constraint reads;
+// set_frame() updates it (once per character time).
 #pragma once
 
 #include <Eigen/Core>
@@ -25,8 +33,10 @@
 #include "csp/problem.h"
 #include "domains/camera/area_profile_switch.h"
 #include "domains/camera/constraints/frame_parameters.h"
+#include "domains/camera/motion_prediction.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 
@@ -36,6 +46,7 @@ class CameraProblem {
     csp::ConstraintId height = 0, distance = 0, orientation = 0, frame_coherence = 0;
     csp::ConstraintId look_at = 0, clearance = 0;
     std::optional<csp::ConstraintId> visible_fraction;
+    std::optional<csp::ConstraintId> future_visible;
     std::vector<csp::ConstraintId> extras;
   };
 
@@ -49,6 +60,10 @@ class CameraProblem {
   csp::Problem& problem() { return *problem_; }
   const csp::Problem& problem() const { return *problem_; }
   const Scene& scene() const { return *scene_; }
+  // The scene's geometry at the last set_frame()'s time (movers placed there).
+  const SceneAtTime& scene_at_time() const { return *at_time_; }
+  // The look-at points predicted at the last set_frame() (empty with lookahead none).
+  const MotionPrediction& prediction() const { return *prediction_; }
   const CameraProfile& profile() const { return *profile_; }
   const FrameParameters& frame() const { return frame_; }
   const ConstraintIds& ids() const { return ids_; }
@@ -77,6 +92,9 @@ class CameraProblem {
 
   const Scene* scene_;
   const CameraProfile* profile_;
+  // Owned through a pointer so the constraints' references survive a move of the problem.
+  std::unique_ptr<SceneAtTime> at_time_;
+  std::unique_ptr<MotionPrediction> prediction_;
   std::unique_ptr<csp::Problem> problem_;
   FrameParameters frame_;
   ConstraintIds ids_;

@@ -14,6 +14,22 @@ std::optional<AreaKind> area_kind_from_string(const std::string& text) {
   return std::nullopt;
 }
 
+const char* to_string(Lookahead lookahead) {
+  switch (lookahead) {
+    case Lookahead::kNone: return "none";
+    case Lookahead::kMotion: return "motion";
+    case Lookahead::kPath: return "path";
+  }
+  return "none";
+}
+
+std::optional<Lookahead> lookahead_from_string(const std::string& text) {
+  if (text == "none") return Lookahead::kNone;
+  if (text == "motion") return Lookahead::kMotion;
+  if (text == "path") return Lookahead::kPath;
+  return std::nullopt;
+}
+
 namespace {
 
 std::string check_adaptation(const AreaAdaptation& a, const std::string& where) {
@@ -60,6 +76,15 @@ std::string CameraProfile::validate() const {
   if (!finite_non_negative(sensing.wall_margin)) return "sensing.wall_margin must be >= 0";
   if (!finite_non_negative(sensing.min_distance)) return "sensing.min_distance must be >= 0";
   if (!finite_non_negative(sensing.smoothing)) return "sensing.smoothing must be >= 0";
+  const Anticipation& a = anticipation;
+  if (!std::isfinite(a.horizon) || a.horizon <= 0 || a.horizon > 5) {
+    return "anticipation.horizon must be in (0, 5] seconds";
+  }
+  if (a.samples < 1 || a.samples > Anticipation::kMaxSamples) {
+    return "anticipation.samples must be 1 to " + std::to_string(Anticipation::kMaxSamples);
+  }
+  if (!finite_non_negative(a.weight)) return "anticipation.weight must be >= 0";
+  if (!positive(a.decay)) return "anticipation.decay must be > 0 seconds";
   return "";
 }
 

@@ -63,6 +63,47 @@ struct SpaceSensing {
   bool operator==(const SpaceSensing&) const = default;
 };
 
+// How far ahead the camera looks (motion_prediction.h, constraints/future_visibility.h).
+//   none:   the reactive camera: only this frame's look-at point counts;
+//   motion: the character's look-at point is forecast from what a game knows this frame
+//           (position, velocity, turn rate) and the geometry ahead, movers from their
+//           current velocity; no future keyframe is read;
+//   path:   the trajectory's and the movers' keyframes are read ahead (scripted sequences,
+//           characters on a planned path).
+enum class Lookahead { kNone, kMotion, kPath };
+const char* to_string(Lookahead lookahead);
+std::optional<Lookahead> lookahead_from_string(const std::string& text);
+
+// The anticipation block: the soft constraint camera.future_visible over `samples` predicted
+// look-at points, at horizon x k / samples seconds ahead (k = 1..samples), each weighted
+// exp(-ahead / decay) (sooner matters more); cost = weight x the weighted fraction hidden.
+struct Anticipation {
+  static constexpr int kMaxSamples = 8;
+  Lookahead lookahead = Lookahead::kNone;
+  double horizon = 1.0;  // seconds ahead, in (0, 5]
+  int samples = 5;       // 1 .. kMaxSamples
+  double weight = 3.0;   // cost when every predicted point is hidden
+  double decay = 0.6;    // seconds: time constant of the weights, > 0
+
+  bool operator==(const Anticipation&) const = default;
+};
+
+// Which discretionary cuts the chase camera may make (thesis table 9). A cut forced by the
+// look-at point becoming hidden from everywhere the camera can move smoothly is always
+// allowed: it is the last resort. The thesis profiles keep all three; the anticipating
+// preset turns them off and relies on moving early instead.
+struct CutPolicy {
+  bool leave_enclosed = true;  // cut when the character leaves an enclosed area
+  bool backing_up = true;      // cut when it backs up into an obstruction
+  bool stuck = true;           // cut when the smooth move has been blocked for a while
+  // Before the last-resort cut, try short smooth moves that keep the look-at point visible
+  // (up, toward the character, to either side; chase_camera.h). Off in the thesis profiles,
+  // whose controller cut there.
+  bool smooth_escape = false;
+
+  bool operator==(const CutPolicy&) const = default;
+};
+
 struct CameraProfile {
   std::string name = "thesis-default";
   std::string description;
@@ -88,6 +129,8 @@ struct CameraProfile {
   // On levels: the ceiling adapts the height with `enclosed.ceiling_margin`, the room behind
   // the character the distance (see SpaceSensing).
   SpaceSensing sensing;
+  Anticipation anticipation;
+  CutPolicy cuts;
 
   // Constraint entries ({kind: ..., scope: [cam_y], ...}) built through the kind registry
   // over the variables cam_x, cam_y, cam_z and the frame parameters (see camera_problem.h).

@@ -1,6 +1,7 @@
 #include "domains/camera/profile_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "csp/files/yaml_spec.h"
@@ -72,7 +73,7 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
   if (!spec.is_map()) spec.fail("expected a camera profile (a mapping), got " + spec.preview());
   spec.check_keys({"name", "description", "base", "height", "distance", "orientation",
                    "frame_coherence", "occlusion", "clearance", "search", "areas", "sensing",
-                   "extras"});
+                   "anticipation", "cuts", "extras"});
   CameraProfile p = base_profile(spec, depth);
   p.name = spec.find("name") ? spec.at("name").as_string("a profile name") : fallback_name;
   if (const Spec* d = spec.find("description")) p.description = d->as_string("a description");
@@ -137,6 +138,34 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     if (const Spec* v = sensing->find("smoothing")) {
       z.smoothing = read_non_negative(*v, "sensing.smoothing (seconds)");
     }
+  }
+  if (const Spec* block = spec.find("anticipation")) {
+    block->check_keys({"lookahead", "horizon", "samples", "weight", "decay"});
+    Anticipation& a = p.anticipation;
+    if (const Spec* v = block->find("lookahead")) {
+      const std::string& text = v->as_string("a lookahead mode: none, motion or path");
+      const auto mode = lookahead_from_string(text);
+      if (!mode) v->fail("expected anticipation.lookahead: none, motion or path, got '" + text + "'");
+      a.lookahead = *mode;
+    }
+    if (const Spec* v = block->find("horizon")) {
+      a.horizon = read_in_range(*v, "anticipation.horizon (seconds ahead)", 0, 5, true);
+    }
+    if (const Spec* v = block->find("samples")) {
+      const double n = read_in_range(*v, "anticipation.samples (predicted points)", 1,
+                                     Anticipation::kMaxSamples);
+      if (n != std::floor(n)) v->fail("expected anticipation.samples, a whole number, got " + v->preview());
+      a.samples = static_cast<int>(n);
+    }
+    if (const Spec* v = block->find("weight")) a.weight = read_non_negative(*v, "anticipation.weight");
+    if (const Spec* v = block->find("decay")) a.decay = read_positive(*v, "anticipation.decay (seconds)");
+  }
+  if (const Spec* block = spec.find("cuts")) {
+    block->check_keys({"leave_enclosed", "backing_up", "stuck", "smooth_escape"});
+    if (const Spec* v = block->find("leave_enclosed")) p.cuts.leave_enclosed = v->as_bool();
+    if (const Spec* v = block->find("backing_up")) p.cuts.backing_up = v->as_bool();
+    if (const Spec* v = block->find("stuck")) p.cuts.stuck = v->as_bool();
+    if (const Spec* v = block->find("smooth_escape")) p.cuts.smooth_escape = v->as_bool();
   }
   if (const Spec* extras = spec.find("extras")) {
     for (const Spec& entry : extras->items("a list of constraint entries for 'extras'")) {

@@ -11,27 +11,58 @@ SceneAtTime::SceneAtTime(const Scene& scene)
     : scene_(&scene),
       boxes_(scene.movers().size()),
       segments_(scene.movers().size(), 0),
-      use_tree_(scene.movers().size() > kFlatMovers) {
+      order_(scene.movers().size()),
+      group_bounds_((scene.movers().size() + kGroupSize - 1) / kGroupSize) {
   set_time(scene.trajectory().start_time());
-  if (use_tree_) tree_ = BoxTree(boxes_);
 }
 
 void SceneAtTime::set_time(double t) {
   time_ = t;
-  bounds_ = Aabb::empty();
   const std::vector<Mover>& movers = scene_->movers();
   for (std::size_t i = 0; i < movers.size(); ++i) {
     boxes_[i] = Aabb::around_feet(movers[i].position_at(t, &segments_[i]), movers[i].size());
-    bounds_.merge(boxes_[i]);
   }
-  if (use_tree_ && tree_.size() == boxes_.size()) tree_.refit(boxes_);
+  regroup();
+}
+
+void SceneAtTime::regroup() {
+  bounds_ = Aabb::empty();
+  for (const Aabb& box : boxes_) bounds_.merge(box);
+  if (boxes_.empty()) return;
+  const Eigen::Vector3d extent = bounds_.max - bounds_.min;
+  int axis = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (extent[i] > extent[axis]) axis = i;
+  }
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<std::uint32_t>(i);
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return boxes_[a].min[axis] + boxes_[a].max[axis] < boxes_[b].min[axis] + boxes_[b].max[axis];
+  });
+  for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
+    group_bounds_[g] = Aabb::empty();
+    const std::size_t end = std::min(order_.size(), (g + 1) * kGroupSize);
+    for (std::size_t k = g * kGroupSize; k < end; ++k) group_bounds_[g].merge(boxes_[order_[k]]);
+  }
+}
+
+void SceneAtTime::set_time_extrapolated(double now, double ahead) {
+  time_ = now + ahead;
+  const std::vector<Mover>& movers = scene_->movers();
+  for (std::size_t i = 0; i < movers.size(); ++i) {
+    const Eigen::Vector3d p = movers[i].position_at(now, &segments_[i]);
+    boxes_[i] = Aabb::around_feet(p + ahead * movers[i].velocity_at(now), movers[i].size());
+  }
+  regroup();
 }
 
 bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
   if (boxes_.empty() || !segment_hits_box(a, b, bounds_)) return false;
-  if (use_tree_) return tree_.segment_blocked(a, b);
-  for (const Aabb& box : boxes_) {
-    if (segment_hits_box(a, b, box)) return true;
+  for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
+    if (!segment_hits_box(a, b, group_bounds_[g])) continue;
+    const std::size_t end = std::min(order_.size(), (g + 1) * kGroupSize);
+    for (std::size_t k = g * kGroupSize; k < end; ++k) {
+      if (segment_hits_box(a, b, boxes_[order_[k]])) return true;
+    }
   }
   return false;
 }
@@ -43,64 +74,63 @@ std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
   const Eigen::Vector3d delta = b - a;
   SegmentClip clip;
   if (!clip_segment_to_box(a, delta, bounds_, best ? best->t : 1.0, clip)) return best;
-  if (use_tree_) {
-    const auto hit = tree_.first_hit(a, b);
-    if (!hit || (best && hit->t >= best->t)) return best;
-    SurfaceHit mover;
-    mover.t = hit->t;
-    mover.source = SurfaceHit::Source::kMover;
-    mover.index = hit->box;
-    if (mover.t > 0) mover.normal = boxes_[hit->box].nearest_face_normal(a + mover.t * delta);
-    return mover;
-  }
-  for (std::size_t i = 0; i < boxes_.size(); ++i) {
-    if (!clip_segment_to_box(a, delta, boxes_[i], best ? best->t : 1.0, clip)) continue;
-    if (best && clip.enter >= best->t) continue;
-    SurfaceHit hit;
-    hit.t = clip.enter;
-    hit.source = SurfaceHit::Source::kMover;
-    hit.index = static_cast<std::uint32_t>(i);
-    if (hit.t > 0) hit.normal = boxes_[i].nearest_face_normal(a + hit.t * delta);
-    best = hit;
+  for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
+    if (!clip_segment_to_box(a, delta, group_bounds_[g], best ? best->t : 1.0, clip)) continue;
+    const std::size_t end = std::min(order_.size(), (g + 1) * kGroupSize);
+    for (std::size_t k = g * kGroupSize; k < end; ++k) {
+      const std::size_t i = order_[k];
+      if (!clip_segment_to_box(a, delta, boxes_[i], best ? best->t : 1.0, clip)) continue;
+      // Equal entries: the lower mover index wins, as in index order.
+      if (best && (clip.enter > best->t ||
+                   (clip.enter == best->t && (best->source != SurfaceHit::Source::kMover ||
+                                              best->index < i)))) {
+        continue;
+      }
+      SurfaceHit hit;
+      hit.t = clip.enter;
+      hit.source = SurfaceHit::Source::kMover;
+      hit.index = static_cast<std::uint32_t>(i);
+      if (hit.t > 0) hit.normal = boxes_[i].nearest_face_normal(a + hit.t * delta);
+      best = hit;
+    }
   }
   return best;
 }
 
 double SceneAtTime::clearance(const Eigen::Vector3d& p, double limit) const {
   double d = scene_->clearance(p, limit);
-  if (use_tree_) {
-    if (const auto near = tree_.nearest(p, d)) d = std::min(d, near->signed_distance);
-    return d;
+  for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
+    // Outside a group's bounds, its members are at least as far as the bounds.
+    if (group_bounds_[g].signed_distance(p) >= d) continue;
+    const std::size_t end = std::min(order_.size(), (g + 1) * kGroupSize);
+    for (std::size_t k = g * kGroupSize; k < end; ++k) {
+      d = std::min(d, boxes_[order_[k]].signed_distance(p));
+    }
   }
-  for (const Aabb& box : boxes_) d = std::min(d, box.signed_distance(p));
   return std::min(d, limit);
 }
 
 std::optional<NearestSurface> SceneAtTime::nearest_surface(const Eigen::Vector3d& p,
                                                            double limit) const {
   std::optional<NearestSurface> best = scene_->nearest_surface(p, limit);
-  if (use_tree_) {
-    const auto near = tree_.nearest(p, best ? best->signed_distance : limit);
-    if (near && (!best || near->signed_distance < best->signed_distance)) {
-      best = NearestSurface{near->signed_distance,
-                            signed_distance_gradient(boxes_[near->box], p)};
+  for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
+    const double bound = group_bounds_[g].signed_distance(p);
+    if (bound >= limit || (best && bound >= best->signed_distance)) continue;
+    const std::size_t end = std::min(order_.size(), (g + 1) * kGroupSize);
+    for (std::size_t k = g * kGroupSize; k < end; ++k) {
+      const Aabb& box = boxes_[order_[k]];
+      const double d = box.signed_distance(p);
+      if (d >= limit || (best && d >= best->signed_distance)) continue;
+      best = NearestSurface{d, signed_distance_gradient(box, p)};
     }
-    return best;
-  }
-  for (const Aabb& box : boxes_) {
-    const double d = box.signed_distance(p);
-    if (d >= limit || (best && d >= best->signed_distance)) continue;
-    best = NearestSurface{d, signed_distance_gradient(box, p)};
   }
   return best;
 }
 
 bool SceneAtTime::open_at(const Eigen::Vector3d& p) const {
   if (!scene_->open_at(p)) return false;
-  // As Scene::open_at: strictly inside a box is closed, its faces are open.
-  if (use_tree_) return !tree_.nearest(p, 0.0);
   for (const Aabb& box : boxes_) {
-    if (box.signed_distance(p) < 0) return false;
+    if (box.contains(p)) return false;
   }
   return true;
 }

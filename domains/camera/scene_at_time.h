@@ -8,16 +8,19 @@
 // This is the one geometry interface of the camera: nothing that judges where the camera
 // may go asks Scene's static-only queries.
 //
-// Movers sit beside the static index, in a structure of their own (docs/BENCHMARKS.md,
-// "Movers", measured both): up to kFlatMovers of them in a flat array tested one by one after
-// one reject against their common bounds (a handful of slab tests beat any tree walk);
-// beyond that in a BoxTree built once at the first frame's positions and refitted (node
-// bounds recomputed, shape kept) by every set_time(). set_time() and the queries do not
-// allocate; the constructor sizes everything once.
+// Movers are few (people, doors, vehicles) next to the static geometry, so they sit in a
+// flat array beside the static index, tested after one reject against their common bounds,
+// rather than in a BVH refit every frame: measured in docs/BENCHMARKS.md ("Movers"). Movers
+// spread over a whole city make those common bounds useless, so set_time() also sorts them
+// along the bounds' longest axis into groups of kGroupSize with their own bounds (one level
+// of hierarchy, rebuilt per set_time in O(n log n) without allocating), and every query
+// skips the groups it cannot touch.
+// set_time() and the queries do not allocate; the constructor sizes everything once.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -29,14 +32,16 @@ namespace sightline::camera {
 
 class SceneAtTime {
  public:
-  static constexpr std::size_t kFlatMovers = 16;
-
   // At the scene's first frame. `scene` must outlive this object.
   explicit SceneAtTime(const Scene& scene);
 
   const Scene& scene() const { return *scene_; }
   // Places every mover at time t (seconds). O(movers) for times that advance frame by frame.
   void set_time(double t);
+  // Places every mover where its velocity at `now` carries it `ahead` seconds later (a
+  // constant-velocity forecast from what a game knows at `now`, not its future keyframes);
+  // time() becomes now + ahead. The anticipating camera's `lookahead: motion` uses this.
+  void set_time_extrapolated(double now, double ahead);
   double time() const { return time_; }
   // The movers' boxes at time(), in the order of scene().movers().
   const std::vector<Aabb>& mover_boxes() const { return boxes_; }
@@ -58,13 +63,17 @@ class SceneAtTime {
   bool mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
  private:
+  static constexpr std::size_t kGroupSize = 4;
+  // Sorts the movers into groups and computes bounds_ and the groups' bounds.
+  void regroup();
+
   const Scene* scene_;
   double time_ = 0;
   std::vector<Aabb> boxes_;
   std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
   Aabb bounds_ = Aabb::empty();        // of boxes_
-  BoxTree tree_;                       // over boxes_, when there are more than kFlatMovers
-  bool use_tree_ = false;
+  std::vector<std::uint32_t> order_;   // mover indices, grouped
+  std::vector<Aabb> group_bounds_;     // of order_[g * kGroupSize ...]
 };
 
 }  // namespace sightline::camera

@@ -8,7 +8,7 @@ namespace sightline::camera {
 void SpaceSensor::update(const CharacterState& character) {
   if (started_ && character.t == last_t_) return;
   const SpaceSensing& s = profile_->sensing;
-  const Eigen::Vector3d look = scene_->character().look_at(character.position);
+  const Eigen::Vector3d look = scene_->scene().character().look_at(character.position);
   const double look_height = look.y() - character.position.y();
 
   double ceiling = look_height + s.ceiling_probe;

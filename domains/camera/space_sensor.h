@@ -25,15 +25,16 @@
 #include <Eigen/Core>
 
 #include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 #include "domains/camera/trajectory.h"
 
 namespace sightline::camera {
 
 class SpaceSensor {
  public:
-  // Both must outlive the sensor.
-  SpaceSensor(const Scene& scene, const CameraProfile& profile)
+  // Both must outlive the sensor. The probes see `scene` at its current time (movers
+  // included); its owner sets that time to the character's before update().
+  SpaceSensor(const SceneAtTime& scene, const CameraProfile& profile)
       : scene_(&scene), profile_(&profile) {}
 
   // Senses around `character` (at character.t) and low-passes what it sees.
@@ -46,7 +47,7 @@ class SpaceSensor {
   double desired_distance() const;
 
  private:
-  const Scene* scene_;
+  const SceneAtTime* scene_;
   const CameraProfile* profile_;
   bool started_ = false;
   double last_t_ = 0;

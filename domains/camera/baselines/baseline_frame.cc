@@ -12,7 +12,7 @@ void describe_baseline_frame(const CameraProblem& problem, const Eigen::Vector3d
   frame.cut_reason = frame.cut ? CutReason::kTooFast : CutReason::kNone;
   const double values[3] = {position.x(), position.y(), position.z()};
   frame.score = problem.problem().score(values);
-  frame.look_at_visible = problem.scene().line_of_sight(position, look);
+  frame.look_at_visible = problem.scene_at_time().line_of_sight(position, look);
   frame.effective = problem.effective();
 }
 

@@ -17,7 +17,7 @@ namespace sightline::camera {
 //     sees as a cut, so it is flagged (CutReason::kTooFast);
 //   score: `problem`'s score at `position` (the problem must already be set to this frame,
 //     with `previous` as the last camera, so frame coherence measures this move);
-//   look_at_visible: Scene::line_of_sight(position, look); effective: problem.effective().
+//   look_at_visible: problem.scene_at_time().line_of_sight(position, look) (movers count); effective: problem.effective().
 // solve_seconds is left to the caller, which times the whole update.
 void describe_baseline_frame(const CameraProblem& problem, const Eigen::Vector3d& previous,
                              const Eigen::Vector3d& position, const Eigen::Vector3d& look,

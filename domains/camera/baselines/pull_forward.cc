@@ -64,7 +64,7 @@ Eigen::Vector3d PullForward::pull_in_front(const Eigen::Vector3d& preferred,
   // 1. Along the line from the target out to the preferred spot, the first obstacle.
   double s = distance;  // the camera's distance from the look-at point along dir
   const Eigen::Vector3d start = look + min_distance * dir;
-  if (const auto hit = scene_->first_hit(start, preferred)) {
+  if (const auto hit = problem_.scene_at_time().first_hit(start, preferred)) {
     occluded_ = true;
     s = std::max(min_distance, min_distance + hit->t * (distance - min_distance) - options_.slush);
   }
@@ -73,7 +73,7 @@ Eigen::Vector3d PullForward::pull_in_front(const Eigen::Vector3d& preferred,
   const double r = options_.camera_radius;
   if (r > 0) {
     for (int i = 0; i < kMaxRadiusSteps && s > min_distance; ++i) {
-      const double shortfall = r - scene_->clearance(look + s * dir, r);
+      const double shortfall = r - problem_.scene_at_time().clearance(look + s * dir, r);
       if (shortfall <= 0) break;
       s = std::max(min_distance, s - std::max(shortfall, 1e-6));
     }
@@ -85,6 +85,8 @@ const CameraFrame& PullForward::update(const CharacterState& character, double d
   const auto started = std::chrono::steady_clock::now();
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
   const Eigen::Vector3d previous = frame_.position;
+  // First, so the probes below see the movers where they are at this frame's time.
+  problem_.set_frame(character, previous, dt);
   const Eigen::Vector3d look = scene_->character().look_at(character.position);
   preferred_ = ideal_camera_position(character, profile_->height.desired,
                                      profile_->distance.desired, profile_->orientation.desired);
@@ -102,7 +104,6 @@ const CameraFrame& PullForward::update(const CharacterState& character, double d
   }
   const Eigen::Vector3d position = preferred_ + shown_correction_;
 
-  problem_.set_frame(character, previous, dt);
   describe_baseline_frame(problem_, previous, position, look, max_step(dt), frame_);
   frame_.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

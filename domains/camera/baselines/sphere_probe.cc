@@ -1,6 +1,9 @@
 #include "domains/camera/baselines/sphere_probe.h"
 
+#include <algorithm>
 #include <vector>
+
+#include "domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 
@@ -16,8 +19,8 @@ BoxTree grow_boxes(const Scene& scene, double radius) {
 
 }  // namespace
 
-SphereProbe::SphereProbe(const Scene& scene, double radius)
-    : scene_(&scene), radius_(radius), grown_(grow_boxes(scene, radius)) {}
+SphereProbe::SphereProbe(const SceneAtTime& scene, double radius)
+    : scene_(&scene), radius_(radius), grown_(grow_boxes(scene.scene(), radius)) {}
 
 std::optional<double> SphereProbe::first_contact(const Eigen::Vector3d& a,
                                                  const Eigen::Vector3d& b) const {
@@ -29,10 +32,20 @@ std::optional<double> SphereProbe::first_contact(const Eigen::Vector3d& a,
   // starts at the grown boxes' first hit (none hit: no box is touched). A level's triangles
   // have no such broad phase here, so with a level the trace starts at a.
   double t = 0;
-  if (scene_->triangle_index().empty()) {
+  if (scene_->scene().triangle_index().empty()) {
     const std::optional<BoxTree::Hit> broad = grown_.first_hit(a, b);
-    if (!broad) return std::nullopt;  // no grown box is met, so no rounded one either
-    t = broad->t;
+    double first = broad ? broad->t : 2.0;
+    // The movers at this time, grown by r the same way (a flat loop: they are few).
+    const Eigen::Vector3d r = Eigen::Vector3d::Constant(radius_);
+    SegmentClip clip;
+    for (const Aabb& box : scene_->mover_boxes()) {
+      if (clip_segment_to_box(a, b - a, Aabb{box.min - r, box.max + r}, std::min(first, 1.0),
+                              clip)) {
+        first = std::min(first, clip.enter);
+      }
+    }
+    if (first > 1) return std::nullopt;  // no grown box is met, so no rounded one either
+    t = first;
   }
   // Sphere tracing: t advances by the gap (d - r) / length. The distance query is limited
   // to what could still matter (the rest of the segment plus r).

@@ -14,14 +14,15 @@
 //      Near an edge or corner of a grown box this walks on to the true (rounded) contact.
 // A contact is reported to within `kContactTolerance` (except after kMaxTraceSteps, see
 // there); every centre reported has d >= r up to rounding, so a camera placed there never
-// sits inside geometry.
+// sits inside geometry. Movers count: the probe asks a SceneAtTime, and its broad phase
+// also meets the movers' boxes (at that time) grown by r.
 #pragma once
 
 #include <Eigen/Core>
 #include <optional>
 
 #include "domains/camera/geometry/box_tree.h"
-#include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 
@@ -33,9 +34,10 @@ class SphereProbe {
   // is clear, just short of where the true contact (or near miss) is.
   static constexpr int kMaxTraceSteps = 256;
 
-  // `scene` must outlive the probe. radius > 0 metres. Builds a BoxTree over the grown boxes
-  // (allocates; once per camera, not per frame).
-  SphereProbe(const Scene& scene, double radius);
+  // `scene` must outlive the probe; the probe sees it at whatever time its owner set. radius
+  // > 0 metres. Builds a BoxTree over the grown static boxes (allocates; once per camera,
+  // not per frame).
+  SphereProbe(const SceneAtTime& scene, double radius);
 
   double radius() const { return radius_; }
   // The segment parameter t in [0, 1] at which the sphere moving from `a` to `b` first
@@ -44,7 +46,7 @@ class SphereProbe {
   std::optional<double> first_contact(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
  private:
-  const Scene* scene_;
+  const SceneAtTime* scene_;
   double radius_;
   BoxTree grown_;
 };

@@ -50,7 +50,7 @@ SpringArm::SpringArm(const Scene& scene, const CameraProfile& profile, SpringArm
       profile_(&profile),
       options_(checked(options)),
       problem_(scene, profile),
-      probe_(scene, options_.probe_radius) {
+      probe_(problem_.scene_at_time(), options_.probe_radius) {
   reset(scene.start_camera_position());
 }
 
@@ -63,6 +63,8 @@ const CameraFrame& SpringArm::update(const CharacterState& character, double dt)
   const auto started = std::chrono::steady_clock::now();
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
   const Eigen::Vector3d previous = frame_.position;
+  // First, so the probe below sees the movers where they are at this frame's time.
+  problem_.set_frame(character, previous, dt);
   const Eigen::Vector3d look = scene_->character().look_at(character.position);
   pivot_ = look + options_.target_offset;
 
@@ -93,7 +95,6 @@ const CameraFrame& SpringArm::update(const CharacterState& character, double dt)
     pulled_in_ = true;
   }
 
-  problem_.set_frame(character, previous, dt);
   describe_baseline_frame(problem_, previous, position, look, max_step(dt), frame_);
   frame_.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -13,19 +13,20 @@
 // everywhere: -grad d, where grad d is the unit vector from the nearest point of the nearest
 // surface (outside) or the outward normal of the nearest box face (inside a box);
 // Scene::nearest_surface computes both.
+// Movers count, at the time of the SceneAtTime the constraint reads (the frame's time).
 // Scope (cam_x, cam_y, cam_z); radius from the frame parameter clearance_radius.
 #pragma once
 
 #include "csp/constraint.h"
 #include "domains/camera/constraints/frame_parameters.h"
-#include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 
 class ClearanceConstraint : public csp::Constraint {
  public:
   ClearanceConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
-                      const Scene& scene, const FrameParameters& frame, double weight = 1,
+                      const SceneAtTime& scene, const FrameParameters& frame, double weight = 1,
                       bool hard = true)
       : Constraint({cam_x, cam_y, cam_z}, weight, hard), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.clearance"; }
@@ -41,7 +42,7 @@ class ClearanceConstraint : public csp::Constraint {
   // Writes d violation / d (r - d) times grad(r - d) = -slope x grad d into gradient.
   double evaluate(std::span<const double> values, std::span<double> gradient,
                   double smoothing) const;
-  const Scene* scene_;
+  const SceneAtTime* scene_;
   FrameParameters frame_;
 };
 

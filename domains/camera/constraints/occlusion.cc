@@ -20,12 +20,6 @@ std::array<Eigen::Vector3d, kBodySamples> body_sample_points(const Aabb& body) {
   return points;
 }
 
-double visible_fraction(const Scene& scene, const Eigen::Vector3d& camera, const Aabb& body) {
-  int visible = 0;
-  for (const Eigen::Vector3d& p : body_sample_points(body)) visible += scene.line_of_sight(camera, p);
-  return static_cast<double>(visible) / kBodySamples;
-}
-
 double LookAtVisibleConstraint::violation(std::span<const double> values) const {
   const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
   const Eigen::Vector3d look(frame_.look_x.value(), frame_.look_y.value(), frame_.look_z.value());
@@ -41,7 +35,7 @@ double LookAtVisibleConstraint::violation_and_gradient(std::span<const double> v
 double BodyVisibilityConstraint::violation(std::span<const double> values) const {
   const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
   const Eigen::Vector3d feet(frame_.char_x.value(), frame_.char_y.value(), frame_.char_z.value());
-  return 1.0 - visible_fraction(*scene_, camera, scene_->character().body_at(feet));
+  return 1.0 - visible_fraction(*scene_, camera, scene_->scene().character().body_at(feet));
 }
 
 double BodyVisibilityConstraint::violation_and_gradient(std::span<const double> values,

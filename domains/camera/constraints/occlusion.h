@@ -28,6 +28,7 @@
 #include "csp/constraint.h"
 #include "domains/camera/constraints/frame_parameters.h"
 #include "domains/camera/scene.h"
+#include "domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 
@@ -35,20 +36,31 @@ constexpr int kBodySamples = 9;
 
 // The sample points of a body box: its centre, then the 8 pulled-in corners.
 std::array<Eigen::Vector3d, kBodySamples> body_sample_points(const Aabb& body);
-// Fraction of the sample points of `body` that `camera` has a clear line of sight to.
-double visible_fraction(const Scene& scene, const Eigen::Vector3d& camera, const Aabb& body);
+// Fraction of the sample points of `body` that `camera` has a clear line of sight to, in
+// `geometry`: a Scene (static geometry only) or a SceneAtTime (movers at its time included).
+template <class Geometry>
+double visible_fraction(const Geometry& geometry, const Eigen::Vector3d& camera,
+                        const Aabb& body) {
+  int visible = 0;
+  for (const Eigen::Vector3d& p : body_sample_points(body)) {
+    visible += geometry.line_of_sight(camera, p);
+  }
+  return static_cast<double>(visible) / kBodySamples;
+}
 
 // Violation 1 when the sight line camera -> look-at point is blocked, else 0.
-// Scope (cam_x, cam_y, cam_z). The scene must outlive the constraint.
+// Scope (cam_x, cam_y, cam_z). The geometry is the scene at the frame's time (the owner,
+// CameraProblem, sets its time with the frame); it must outlive the constraint.
 class LookAtVisibleConstraint : public csp::Constraint {
  public:
   LookAtVisibleConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
-                          const Scene& scene, const FrameParameters& frame, double weight = 1,
+                          const SceneAtTime& scene, const FrameParameters& frame, double weight = 1,
                           bool hard = true)
       : Constraint({cam_x, cam_y, cam_z}, weight, hard), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.look_at_visible"; }
-  // The scene whose geometry the sight line is tested against (camera-aware solvers use it).
-  const Scene& scene() const { return *scene_; }
+  // The geometry the sight line is tested against, at the frame's time (camera-aware
+  // solvers use it).
+  const SceneAtTime& scene() const { return *scene_; }
   double violation(std::span<const double> values) const override;
   // A step function: its gradient is 0 almost everywhere, which finite differences would
   // estimate as noise at the step; say so instead.
@@ -57,7 +69,7 @@ class LookAtVisibleConstraint : public csp::Constraint {
   bool has_exact_gradient() const override { return true; }
 
  private:
-  const Scene* scene_;
+  const SceneAtTime* scene_;
   FrameParameters frame_;
 };
 
@@ -65,7 +77,7 @@ class LookAtVisibleConstraint : public csp::Constraint {
 class BodyVisibilityConstraint : public csp::Constraint {
  public:
   BodyVisibilityConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
-                           const Scene& scene, const FrameParameters& frame, double weight)
+                           const SceneAtTime& scene, const FrameParameters& frame, double weight)
       : Constraint({cam_x, cam_y, cam_z}, weight), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.visible_fraction"; }
   double violation(std::span<const double> values) const override;
@@ -74,7 +86,7 @@ class BodyVisibilityConstraint : public csp::Constraint {
   bool has_exact_gradient() const override { return true; }
 
  private:
-  const Scene* scene_;
+  const SceneAtTime* scene_;
   FrameParameters frame_;
 };
 

@@ -44,7 +44,7 @@ void BourneOctreeSolver::solve_into(const csp::Problem& problem, std::span<const
   const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
   const Eigen::Vector3d right = facing.cross(up).normalized();
   // The four rays, character -> sides, top and bottom of the initial search cube.
-  const Scene& scene = view.scene();
+  const SceneAtTime& scene = view.scene();
   const bool top_blocked = !scene.line_of_sight(look, p0 + half * up);
   int blocked = top_blocked ? 1 : 0;
   const Eigen::Vector3d others[3] = {p0 + half * right, p0 - half * right, p0 - half * up};

@@ -18,7 +18,8 @@ std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& pro
       view.look_at_id_ = id;
       has_look_at = true;
       view.expensive_.insert(view.expensive_.begin(), id);  // one ray: first of the expensive
-    } else if (kind == "camera.visible_fraction" || kind == "camera.clearance") {
+    } else if (kind == "camera.visible_fraction" || kind == "camera.clearance" ||
+               kind == "camera.future_visible") {
       view.expensive_.push_back(id);
     } else {
       if (kind == "camera.orientation") {

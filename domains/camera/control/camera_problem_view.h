@@ -25,7 +25,8 @@ class CameraProblemView {
   // Empty optional (with `why` set) when `problem` is not a camera problem.
   static std::optional<CameraProblemView> find(const csp::Problem& problem, std::string* why);
 
-  const Scene& scene() const { return *scene_; }
+  // The geometry at the frame's time (movers included): what the look-at constraint reads.
+  const SceneAtTime& scene() const { return *scene_; }
   const OrientationConstraint& orientation() const { return *orientation_; }
   csp::ConstraintId orientation_id() const { return orientation_id_; }
   const HeightConstraint& height() const { return *height_; }
@@ -42,7 +43,7 @@ class CameraProblemView {
   double character_yaw(const csp::Problem& problem) const;
 
  private:
-  const Scene* scene_ = nullptr;
+  const SceneAtTime* scene_ = nullptr;
   const OrientationConstraint* orientation_ = nullptr;
   const HeightConstraint* height_ = nullptr;
   csp::ConstraintId orientation_id_ = 0, height_id_ = 0, look_at_id_ = 0;

@@ -10,7 +10,20 @@
 //        through geometry and never to a position from which the look-at point is hidden;
 //      - or by a cut (a flagged jump) when the character leaves an enclosed area, when it
 //        backs up to a wall or other obstruction, when the camera has been stuck behind an
-//        obstacle for a while, and whenever no smooth move keeps the character visible.
+//        obstacle for a while (each of these three is a profile option, CutPolicy: on in
+//        the thesis profiles, off in the anticipating one), and whenever no smooth move
+//        keeps the character visible (always: the last resort).
+//   With cuts.smooth_escape, when the spring's step toward the target is blocked the camera
+//   tries moves around that step and around where it is (1/8 to all of max_speed x dt: up,
+//   down, toward and away from the look-at point, to either side and their mixes, never
+//   longer than max_speed x dt in all), and takes the cheapest under this frame's problem
+//   (so future visibility chooses among them) plus a price on the change of velocity, that
+//   keeps the look-at point visible and crosses nothing, if it is cheaper than staying (or
+//   staying loses sight). Only then does it stay, and after
+//   stuck_seconds cut (if cuts.stuck), or cut because the look-at point is lost. A game
+//   camera slides along the wall, rises or pulls in before it pops. If a forced cut has no
+//   usable target from the solver either, these profiles cut to the first usable spot on
+//   rings 1-3 m around the look-at point (close_in) rather than stay hidden.
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -22,7 +35,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "domains/camera/camera_problem.h"
 #include "domains/camera/control/camera_controller.h"
@@ -76,6 +91,7 @@ class ChaseCamera : public CameraController {
   double max_step(double dt) const override { return options_.max_speed * dt; }
 
  private:
+  // Geometry tests at the frame's time (movers included), through the problem's SceneAtTime.
   bool clear(const Eigen::Vector3d& p) const;
   bool sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const;
   bool usable(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const {
@@ -89,6 +105,13 @@ class ChaseCamera : public CameraController {
                               Eigen::Vector3d* velocity) const;
   void cut_to(const Eigen::Vector3d& p, CutReason reason);
   bool backed_up(const CharacterState& character, const Eigen::Vector3d& look) const;
+  // The cheapest usable short move (see the header comment), if any.
+  // For a forced cut the solver could not place: the first usable spot on rings 1-3 m
+  // around the look-at point (escape profiles only), if any.
+  std::optional<Eigen::Vector3d> close_in(const Eigen::Vector3d& look) const;
+  // `step` is where the spring would have gone.
+  std::optional<Eigen::Vector3d> smooth_escape(const Eigen::Vector3d& look,
+                                               const Eigen::Vector3d& step, double dt) const;
 
   const Scene* scene_;
   ChaseCameraOptions options_;
@@ -106,6 +129,8 @@ class ChaseCamera : public CameraController {
   bool was_backed_up_ = false;
   std::uint64_t frames_ = 0;
   CameraFrame frame_;
+  // Constraint ids for pricing escape moves: without sight lines, and with them.
+  std::vector<csp::ConstraintId> cheap_ids_, sighted_ids_;
 };
 
 }  // namespace sightline::camera

@@ -12,6 +12,7 @@
 
 #include "domains/camera/camera_problem.h"
 #include "domains/camera/constraints/occlusion.h"
+#include "domains/camera/profile_file.h"
 #include "domains/camera/scene_file.h"
 
 #include "tests/count_allocations.h"
@@ -69,6 +70,37 @@ TEST(CameraFramePath, AllocatesNothing) {
   auto* leak_check = new std::vector<int>(10);
   delete leak_check;
   EXPECT_GE(g_allocations.load() - probe, 2);
+}
+
+TEST(CameraFramePath, WithAnticipationAndMoversAllocatesNothing) {
+  // Walls, a cart crossing, the anticipating preset: the prediction (its horizon samples'
+  // SceneAtTimes, the traces against walls) and the future-visibility constraint.
+  std::vector<SolidBox> solids = {{"west", {{-2.2, 0, -5}, {-2, 3, 12}}, {}},
+                                  {"end", {{-2, 0, 10}, {2, 3, 10.3}}, {}}};
+  Scene scene("corridor", std::move(solids), {}, {},
+              Trajectory({{0, {0, 0, 0}, 0}, {4, {0, 0, 9}, 30}}));
+  scene.set_movers({Mover("cart", {1, 2, 1}, {{0, {-6, 0, 4}}, {6, {6, 0, 4}}})});
+  const CameraProfile profile = preset_profile("anticipating");
+  CameraProblem cp(scene, profile);
+  ASSERT_TRUE(cp.ids().future_visible.has_value());
+  std::vector<double> values(3);
+  double total = 0;
+  auto one_frame = [&](std::size_t frame) {
+    const CharacterState s = scene.character_at(scene.frame_time(frame));
+    cp.set_frame(s, cp.ideal_position(), 1.0 / scene.frame_rate());
+    const Eigen::Vector3d ideal = cp.ideal_position();
+    for (int k = 0; k < 8; ++k) {
+      values[0] = ideal.x() + ((k & 1) ? 0.3 : -0.3);
+      values[1] = ideal.y() + ((k & 2) ? 0.3 : -0.3);
+      values[2] = ideal.z() + ((k & 4) ? 0.3 : -0.3);
+      total += cp.problem().score(values).soft;
+    }
+  };
+  one_frame(0);
+  const long before = g_allocations.load();
+  for (std::size_t f = 1; f < scene.frame_count(); ++f) one_frame(f);
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_TRUE(std::isfinite(total));
 }
 
 }  // namespace

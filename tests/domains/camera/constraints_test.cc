@@ -242,7 +242,8 @@ TEST(LookAtVisibleConstraint, IsOneExactlyWhenTheSightLineIsBlocked) {
   const Scene scene = walls_scene();
   Frame f;
   f.set(character_at({0, 0, 0}, 0));  // look-at point (0, 1.5, 0)
-  const LookAtVisibleConstraint c(0, 1, 2, scene, f.p);
+  const SceneAtTime at(scene);
+  const LookAtVisibleConstraint c(0, 1, 2, at, f.p);
   EXPECT_TRUE(c.is_hard());
   const double over[] = {0, 3, -6};    // the line passes over the low wall
   EXPECT_EQ(c.violation(over), 0.0);
@@ -256,7 +257,8 @@ TEST(BodyVisibilityConstraint, CountsTheVisibleSamplePoints) {
   const Scene scene = walls_scene();
   Frame f;
   f.set(character_at({0, 0, 0}, 0));
-  const BodyVisibilityConstraint c(0, 1, 2, scene, f.p, 1.0);
+  const SceneAtTime at(scene);
+  const BodyVisibilityConstraint c(0, 1, 2, at, f.p, 1.0);
   // Level with the body's centre (0.9 m), 10 m back: the wall hides the centre and the four
   // lower sample points (at 0.18 m); the four upper ones (1.62 m) show: 4 of 9 visible.
   const double low[] = {0, 0.9, -10};
@@ -294,7 +296,8 @@ TEST(ClearanceConstraint, GrowsAsTheCameraSphereSinksIntoGeometry) {
   const Scene scene = walls_scene();
   Frame f;
   f.set(FrameValues{});  // clearance radius 0.2
-  const ClearanceConstraint c(0, 1, 2, scene, f.p);
+  const SceneAtTime at(scene);
+  const ClearanceConstraint c(0, 1, 2, at, f.p);
   EXPECT_TRUE(c.is_hard());
   const double free_cam[] = {0, 3, -5};
   EXPECT_EQ(c.violation(free_cam), 0.0);
@@ -310,7 +313,8 @@ TEST(ClearanceConstraint, GradientMatchesFiniteDifferences) {
   const Scene scene = walls_scene();
   Frame f;
   f.set(FrameValues{});
-  const ClearanceConstraint c(0, 1, 2, scene, f.p);
+  const SceneAtTime at(scene);
+  const ClearanceConstraint c(0, 1, 2, at, f.p);
   ASSERT_TRUE(c.has_exact_gradient());
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> x(-1, 1), y(0.7, 1.3), z(-2.3, -1.5);

@@ -132,7 +132,8 @@ Scene areas_scene() {
 TEST(AreaProfileSwitch, AdaptsOnEnteringAndRestoresOnLeaving) {
   const Scene scene = areas_scene();
   const CameraProfile profile;  // thesis-default: 2.5 m up, 4 m back
-  AreaProfileSwitch areas(scene, profile);
+  const SceneAtTime at(scene);
+  AreaProfileSwitch areas(at, profile);
 
   AreaTransition t = areas.update({-5, 0, 5});  // outside
   EXPECT_FALSE(t.changed());
@@ -164,7 +165,8 @@ TEST(AreaProfileSwitch, AdaptsOnEnteringAndRestoresOnLeaving) {
 TEST(AreaProfileSwitch, StepsStraightFromOneAreaIntoTheNext) {
   const Scene scene = areas_scene();
   const CameraProfile profile;
-  AreaProfileSwitch areas(scene, profile);
+  const SceneAtTime at(scene);
+  AreaProfileSwitch areas(at, profile);
   areas.update({3, 0, 5});
   const AreaTransition t = areas.update({10, 0, 5});
   ASSERT_TRUE(t.left && t.entered);
@@ -179,7 +181,8 @@ TEST(AreaProfileSwitch, StepsStraightFromOneAreaIntoTheNext) {
 TEST(AreaProfileSwitch, TheInnermostAreaWins) {
   const Scene scene = areas_scene();
   const CameraProfile profile;
-  AreaProfileSwitch areas(scene, profile);
+  const SceneAtTime at(scene);
+  AreaProfileSwitch areas(at, profile);
   areas.update({3, 0, 5});
   const AreaTransition t = areas.update({1, 0, 9});  // the alcove, inside the room
   ASSERT_TRUE(t.entered);
@@ -192,7 +195,8 @@ TEST(AreaProfileSwitch, AnAreaKindWithoutAdaptationChangesNothing) {
   const Scene scene = areas_scene();
   CameraProfile profile;
   profile.enclosed = {};
-  AreaProfileSwitch areas(scene, profile);
+  const SceneAtTime at(scene);
+  AreaProfileSwitch areas(at, profile);
   const AreaTransition t = areas.update({3, 0, 5});
   EXPECT_TRUE(t.entered);  // transitions are still reported
   EXPECT_EQ(areas.current().desired_height, 2.5);

@@ -165,7 +165,7 @@ INSTANTIATE_TEST_SUITE_P(
                  with_trajectory("name: x\ncharacter:\n  look_at_height: 2.5\n"), 3,
                  "at most the character's height"},
         BadScene{"UnknownProfile", with_trajectory("name: x\ncamera:\n  profile: fancy\n"), 3,
-                 "unknown camera profile 'fancy' (presets: close-follow, high-follow, thesis-default"},
+                 "unknown camera profile 'fancy' (presets: anticipating, anticipating-path, close-follow, high-follow, thesis-default"},
         BadScene{"BadInlineProfileField",
                  with_trajectory("name: x\ncamera:\n  profile:\n    height: {desired: 2, wieght: 1}\n"),
                  4, "unknown field 'wieght'"},

@@ -87,7 +87,8 @@ TEST(SpaceSensor, SeesTheCeilingAndTheRoomBehindAndAdaptsLikeAnArea) {
   const Scene s = level_scene(true);
   CameraProfile profile;  // height 2.5, distance 4, enclosed ceiling margin 0.5
   profile.sensing.smoothing = 0;
-  SpaceSensor sensor(s, profile);
+  const SceneAtTime at(s);
+  SpaceSensor sensor(at, profile);
   CharacterState c;
   c.position = {0, 0, 7};  // under the walkway roof, between the wall and its far end
   c.yaw = 180;             // facing -z: the camera wants to be toward +z
@@ -113,7 +114,8 @@ TEST(SpaceSensor, LowPassesWhatItSeesAndIgnoresARepeatedTime) {
   const Scene s = level_scene(true);
   CameraProfile profile;
   profile.sensing.smoothing = 0.5;
-  SpaceSensor sensor(s, profile);
+  const SceneAtTime at(s);
+  SpaceSensor sensor(at, profile);
   CharacterState c;
   c.position = {0, 0, 4};
   c.yaw = 0;

@@ -86,7 +86,8 @@ TEST(SphereProbe, FirstContactIsWhereTheBruteForceDistanceFirstReachesTheRadius)
     const camera::Scene scene = scene_with(boxes);
     const auto brute = brute_boxes(scene);
     const double r = 0.3;
-    const camera::SphereProbe probe(scene, r);
+    const camera::SceneAtTime at(scene);
+    const camera::SphereProbe probe(at, r);
     for (int k = 0; k < 30; ++k) {
       const Vector3d a(pos(rng) * 1.4, pos(rng) * 1.4, pos(rng) * 1.4);
       const Vector3d b(pos(rng) * 1.4, pos(rng) * 1.4, pos(rng) * 1.4);
