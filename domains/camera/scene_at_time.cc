@@ -129,8 +129,9 @@ std::optional<NearestSurface> SceneAtTime::nearest_surface(const Eigen::Vector3d
 
 bool SceneAtTime::open_at(const Eigen::Vector3d& p) const {
   if (!scene_->open_at(p)) return false;
+  // As Scene::open_at: strictly inside a box is closed, its faces are open.
   for (const Aabb& box : boxes_) {
-    if (box.contains(p)) return false;
+    if (box.signed_distance(p) < 0) return false;
   }
   return true;
 }
