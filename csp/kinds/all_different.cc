@@ -432,7 +432,7 @@ std::optional<AllDifferent::KeyRange> key_range_from_domains(const Problem& prob
   constexpr double kMaxKeyMagnitude = 1e15;  // far inside the exactly representable integers
   double lo = 0, hi = 0;
   for (std::size_t i = 0; i < scope.size(); ++i) {
-    const Domain& d = problem.variable(scope[i]).domain;
+    const Domain& d = problem.domain(scope[i]);
     const double offset = offsets.empty() ? 0.0 : offsets[i];
     if (!d.is_discrete() || offset != std::floor(offset)) return std::nullopt;
     if (d.kind() == DomainKind::kValueSet) {

@@ -106,7 +106,7 @@ void DiscreteSearch::begin_dealt_run(csp::Assignment values) {
 void DiscreteSearch::randomise(csp::Assignment& values) {
   for (csp::VariableId v = 0; v < n_; ++v) {
     if (group_of_[v] != kNoGroup) continue;
-    const csp::Domain& d = problem_.variable(v).domain;
+    const csp::Domain& d = problem_.domain(v);
     values[v] = d.value_at(random_.index(d.size()));
   }
   for (const PermutationGroup& g : groups_) deal_group(g, values);

@@ -100,11 +100,11 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
     }
     const auto scope = all_different->scope();
     if (scope.size() < 2) continue;
-    const csp::Domain& first = problem.variable(scope[0]).domain;
+    const csp::Domain& first = problem.domain(scope[0]);
     if (!first.is_discrete() || first.size() != scope.size()) continue;
     bool fits = true;
     for (csp::VariableId v : scope) {
-      if (taken[v] || !same_values(first, problem.variable(v).domain)) {
+      if (taken[v] || !same_values(first, problem.domain(v))) {
         fits = false;
         break;
       }
