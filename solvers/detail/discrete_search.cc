@@ -114,6 +114,9 @@ void DiscreteSearch::randomise(csp::Assignment& values) {
 }
 
 void DiscreteSearch::begin_run(csp::Assignment values) {
+  // The old evaluator goes first: at a million variables each holds tens of MB of counts,
+  // and two alive at once would double the search's peak memory.
+  evaluator_.reset();
   evaluator_ = std::make_unique<csp::IncrementalEvaluator>(problem_, std::move(values), constant_);
   ++evaluations_;
   run_best_ = evaluator_->score();
