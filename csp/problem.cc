@@ -179,18 +179,21 @@ void Problem::build_incidences() const {
   if (incidence_ready_.load(std::memory_order_acquire)) return;
   // Counting sort of (variable, constraint, position) by variable: two passes over the
   // scopes, and within a variable the constraints stay in id order.
+  // Filled backwards from each variable's end, so that no second array of cursors is
+  // needed and the starts are where the cursors stop.
   const std::size_t n = num_variables();
+  std::size_t total = 0;
+  for (const auto& c : constraints_) total += c->scope().size();
   incidence_start_.assign(n + 1, 0);
   for (const auto& c : constraints_) {
-    for (VariableId v : c->scope()) ++incidence_start_[v + 1];
+    for (VariableId v : c->scope()) ++incidence_start_[v];
   }
-  for (std::size_t v = 0; v < n; ++v) incidence_start_[v + 1] += incidence_start_[v];
-  incidence_.resize(incidence_start_[n]);
-  std::vector<std::size_t> next(incidence_start_.begin(), incidence_start_.end() - 1);
-  for (ConstraintId id = 0; id < constraints_.size(); ++id) {
+  for (std::size_t v = 1; v <= n; ++v) incidence_start_[v] += incidence_start_[v - 1];
+  incidence_.resize(total);
+  for (auto id = static_cast<ConstraintId>(constraints_.size()); id-- > 0;) {
     const auto scope = constraints_[id]->scope();
-    for (std::size_t i = 0; i < scope.size(); ++i) {
-      incidence_[next[scope[i]]++] = {id, static_cast<std::uint32_t>(i)};
+    for (std::size_t i = scope.size(); i-- > 0;) {
+      incidence_[--incidence_start_[scope[i]]] = {id, static_cast<std::uint32_t>(i)};
     }
   }
   incidence_ready_.store(true, std::memory_order_release);
