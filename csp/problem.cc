@@ -68,11 +68,19 @@ void Problem::check_batch_names(std::string_view prefix, std::size_t count) cons
   for (const std::string& name : named_) {
     if (generated_index(name, prefix, count)) twice(name);
   }
-  // Two batches can only share a name when one prefix begins the other; then the names of
-  // the longer-prefixed batch are checked against the other's form.
+  // Two batches can only share a name when one prefix begins the other and the rest of the
+  // longer one is digits; then the names of the longer-prefixed batch are checked against
+  // the other's form.
+  auto digits_only = [](std::string_view text) {
+    return std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
   for (const NameRun& run : runs_) {
     if (!run.generated || count == 0 || run.count == 0) continue;
     const std::string_view other = run.prefix;
+    if (!digits_only(other.size() > prefix.size() ? other.substr(prefix.size())
+                                                  : prefix.substr(other.size()))) {
+      continue;
+    }
     if (other.starts_with(prefix)) {
       for (std::size_t k = 0; k < run.count; ++k) {
         const std::string name = generated_name(other, k);

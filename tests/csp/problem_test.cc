@@ -154,6 +154,11 @@ TEST(Problem, RefusesBatchNamesThatAnotherVariableHasAlready) {
     EXPECT_THROW(p.add_variables("q1", 5, Domain::integer_range(0, 1)), std::invalid_argument);
     EXPECT_THROW(p.add_variables("q", 1, Domain::integer_range(0, 1)), std::invalid_argument);
     EXPECT_NO_THROW(p.add_variables("r", 3, Domain::integer_range(0, 1)));
+    EXPECT_NO_THROW(p.add_variables("qa", 3, Domain::integer_range(0, 1)));  // never digits
+    EXPECT_THROW(p.add_variables("", 3, Domain::integer_range(0, 1)), std::invalid_argument);
+    EXPECT_EQ(p.find_variable("qa2"), 25u);
+    EXPECT_EQ(p.find_variable("q19"), 19u);
+    EXPECT_EQ(p.find_variable("r0"), 20u);
   }
   Problem p;
   EXPECT_THROW(p.add_variables("", 3, Domain::integer_range(0, 1)), std::invalid_argument);
