@@ -14,7 +14,9 @@ namespace sightline::apps {
 
 std::string describe_problem(const csp::Problem& problem) {
   std::size_t discrete = 0, hard = 0;
-  for (const auto& v : problem.variables()) discrete += v.domain.is_discrete() ? 1 : 0;
+  for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
+    discrete += problem.domain(v).is_discrete() ? 1 : 0;
+  }
   for (csp::ConstraintId c = 0; c < problem.num_constraints(); ++c) {
     hard += problem.constraint(c).is_hard() ? 1 : 0;
   }
@@ -87,13 +89,13 @@ void write_solution(const std::string& path, const csp::Problem& problem,
   std::ostringstream text;
   text.precision(std::numeric_limits<double>::max_digits10);
   for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
-    const csp::Domain& domain = problem.variable(v).domain;
+    const csp::Domain& domain = problem.domain(v);
     if (v > 0) text << ' ';
     if (domain.is_discrete()) {
       const auto index = domain.index_of(values[v]);
       if (!index) {
         throw std::invalid_argument("value " + format_number(values[v], 17) + " of variable '" +
-                                    problem.variable(v).name + "' is not in its domain " +
+                                    problem.variable_name(v) + "' is not in its domain " +
                                     domain.describe());
       }
       text << *index;

@@ -5,8 +5,16 @@
 // breakdown, feasibility) and one-variable changes; solvers that move one variable at a time
 // should use IncrementalEvaluator, which adds per-constraint incremental state on top.
 // Values are indexed by VariableId; see Assignment.
+//
+// Storage is flat so that a model of millions of variables (1,000,000-queens) costs little to
+// build and to free: a batch from add_variables keeps one prefix, not a name per variable,
+// and shares one Domain; the variable -> constraint index is built on first use in one
+// compressed array (CSR) rather than one small vector per variable. variable() and
+// variables() still hand out Variable records, made on first call (see there).
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -67,17 +75,33 @@ class Problem {
   // repeats a variable, or is empty. Returns its id (ids are dense, in order of addition).
   ConstraintId add_constraint(std::unique_ptr<Constraint> constraint);
 
-  std::size_t num_variables() const { return variables_.size(); }
+  std::size_t num_variables() const { return domain_slot_.size(); }
   std::size_t num_constraints() const { return constraints_.size(); }
-  const Variable& variable(VariableId id) const { return variables_[id]; }
-  const std::vector<Variable>& variables() const { return variables_; }
+  // A variable's domain; O(1), no allocation. Prefer it to variable(id).domain.
+  const Domain& domain(VariableId id) const { return domains_[domain_slot_[id]]; }
+  // A variable's name (made from its batch's prefix for add_variables batches).
+  std::string variable_name(VariableId id) const;
+  // Name and domain as one record. The records are made for every variable on the first
+  // call of either (a copy of each name and domain: on a million-variable model that is as
+  // much as building it), so code that runs on large models uses domain() and
+  // variable_name(). The references stay valid until a variable is added.
+  const Variable& variable(VariableId id) const { return variables()[id]; }
+  const std::vector<Variable>& variables() const;
   std::optional<VariableId> find_variable(std::string_view name) const;
   // Re-parameterisation: replaces a variable's domain (the camera's search box moves with the
-  // character every frame). Constraints and the index are untouched.
-  void set_domain(VariableId id, Domain domain) { variables_[id].domain = std::move(domain); }
+  // character every frame). Constraints and the index are untouched. After the first call
+  // for a variable of a batch, no allocation beyond the domain's own.
+  void set_domain(VariableId id, Domain domain);
   const Constraint& constraint(ConstraintId id) const { return *constraints_[id]; }
   Constraint& mutable_constraint(ConstraintId id) { return *constraints_[id]; }
-  std::span<const Incidence> incidences(VariableId id) const { return incidence_[id]; }
+  // The constraints `id` takes part in, in order of addition. The index is built on the
+  // first call after constraints were added (O(total scope size)); the span stays valid
+  // until a constraint is added.
+  std::span<const Incidence> incidences(VariableId id) const {
+    if (!incidence_ready_.load(std::memory_order_acquire)) build_incidences();
+    return {incidence_.data() + incidence_start_[id],
+            incidence_start_[id + 1] - incidence_start_[id]};
+  }
 
   Parameters& parameters() { return parameters_; }
   const Parameters& parameters() const { return parameters_; }
@@ -104,18 +128,42 @@ class Problem {
   void check_assignment(std::span<const double> values) const;
 
  private:
+  // Consecutive variables named alike: a batch from add_variables (prefix + index), or
+  // variables added one at a time (their names in named_, from named_base on).
+  struct NameRun {
+    VariableId first = 0;
+    std::size_t count = 0;
+    bool generated = false;
+    std::string prefix;         // generated runs only
+    std::size_t named_base = 0;  // other runs: where their names start in named_
+  };
+  const NameRun& run_of(VariableId id) const;
+  // Throws if a batch (prefix, count) would make a name that exists already.
+  void check_batch_names(std::string_view prefix, std::size_t count) const;
+  void build_incidences() const;
   std::string name_;
-  std::vector<Variable> variables_;
-  // Brings the name index up to date (the names of add_variables batches are indexed late).
-  void index_names() const;
-
-  // name -> id, O(1) lookups, for variables_[0 .. indexed_). Built lazily (see add_variables)
-  // under a lock, so that concurrent lookups (queries are thread-safe) may trigger it.
-  mutable std::unordered_map<std::string, VariableId> variable_ids_;
-  mutable std::size_t indexed_ = 0;
-  mutable std::mutex index_mutex_;
+  std::vector<NameRun> runs_;
+  std::vector<std::string> named_;  // names of variables added one at a time, in order
+  // name -> id of variables added one at a time; a batch's names are parsed instead.
+  std::unordered_map<std::string, VariableId> variable_ids_;
+  // Variable v's domain is domains_[domain_slot_[v]]. A batch shares one slot; set_domain
+  // gives a variable a slot of its own (slot_owner_) the first time and then reuses it.
+  std::vector<Domain> domains_;
+  std::vector<std::uint32_t> domain_slot_;
+  std::vector<VariableId> slot_owner_;  // kSharedSlot for a batch's slot
+  static constexpr VariableId kSharedSlot = ~VariableId{0};
+  // The Variable records of variables(), made on first use under view_mutex_ (queries are
+  // thread-safe) for variables [0, view_size_); set_domain keeps them current.
+  mutable std::vector<Variable> view_;
+  mutable std::atomic<std::size_t> view_size_{0};
+  mutable std::mutex view_mutex_;
   std::vector<std::unique_ptr<Constraint>> constraints_;
-  std::vector<std::vector<Incidence>> incidence_;
+  // CSR index: variable v's incidences are incidence_[incidence_start_[v] ..
+  // incidence_start_[v + 1]), rebuilt lazily after constraints or variables were added.
+  mutable std::vector<Incidence> incidence_;
+  mutable std::vector<std::size_t> incidence_start_{0};
+  mutable std::atomic<bool> incidence_ready_{true};
+  mutable std::mutex incidence_mutex_;
   Parameters parameters_;
 };
 

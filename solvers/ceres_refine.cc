@@ -155,8 +155,9 @@ CeresRefineSolver::CeresRefineSolver(std::string name, Options options)
     : name_(std::move(name)), options_(std::move(options)) {}
 
 std::string CeresRefineSolver::unsuitable_reason(const csp::Problem& problem) const {
-  for (const auto& variable : problem.variables()) {
-    if (variable.domain.is_continuous() && variable.domain.upper() > variable.domain.lower()) {
+  for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
+    const csp::Domain& domain = problem.domain(v);
+    if (domain.is_continuous() && domain.upper() > domain.lower()) {
       return "";
     }
   }
@@ -317,7 +318,7 @@ void CeresRefineSolver::poll_and_refine(const csp::Problem& problem, double smoo
   const auto half = objective_.half_widths();
   double largest = 0;
   for (std::size_t i = 0; i < free.size(); ++i) {
-    const csp::Domain& d = problem.variable(free[i]).domain;
+    const csp::Domain& d = problem.domain(free[i]);
     const double x = anchor_[free[i]], g = gradient_[i];
     if ((x >= d.upper() && g < 0) || (x <= d.lower() && g > 0)) continue;
     largest = std::max(largest, std::abs(g) * half[i]);
@@ -448,7 +449,7 @@ void CeresRefineSolver::bisect_toward_inside(const csp::Problem& problem, Solver
     const double t = 0.5 * (low + high);
     for (std::size_t v = 0; v < anchor_.size(); ++v) {
       const double x = candidate_[v] + t * (inside_[v] - candidate_[v]);
-      probe_[v] = problem.variable(static_cast<csp::VariableId>(v)).domain.clamp(x);
+      probe_[v] = problem.domain(static_cast<csp::VariableId>(v)).clamp(x);
     }
     if (!judge(problem, probe_, result, score)) break;
     if (score.hard <= limit) {
@@ -482,7 +483,7 @@ bool CeresRefineSolver::accept_along_segment(const csp::Problem& problem, Solver
     const double t = 0.5 * (low + high);
     for (std::size_t v = 0; v < anchor_.size(); ++v) {
       const double x = anchor_[v] + t * (candidate_[v] - anchor_[v]);
-      probe_[v] = problem.variable(static_cast<csp::VariableId>(v)).domain.clamp(x);
+      probe_[v] = problem.domain(static_cast<csp::VariableId>(v)).clamp(x);
     }
     if (!judge(problem, probe_, result, score)) break;
     if (detail::improves(score, anchor_score_)) {

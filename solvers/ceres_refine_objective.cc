@@ -32,7 +32,7 @@ void RefinementObjective::reset(const csp::Problem& problem, std::span<const dou
   radius_.clear();
   free_index_.assign(problem.num_variables(), -1);
   for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
-    const csp::Domain& d = problem.variable(v).domain;
+    const csp::Domain& d = problem.domain(v);
     if (!d.is_continuous() || !(d.upper() > d.lower())) continue;
     free_index_[v] = static_cast<std::int32_t>(free_.size());
     free_.push_back(v);
@@ -86,7 +86,7 @@ void RefinementObjective::to_parameters(std::span<const double> values, std::spa
 void RefinementObjective::to_assignment(std::span<const double> u, std::span<double> values) const {
   std::copy(values_.begin(), values_.end(), values.begin());  // fixed variables: the start
   for (std::size_t i = 0; i < free_.size(); ++i) {
-    const csp::Domain& d = problem_->variable(free_[i]).domain;
+    const csp::Domain& d = problem_->domain(free_[i]);
     // x = c + r sin(u / r); the clamp only absorbs round-off at the bounds.
     values[free_[i]] =
         std::clamp(centre_[i] + radius_[i] * std::sin(u[i] / radius_[i]), d.lower(), d.upper());

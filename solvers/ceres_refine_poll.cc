@@ -18,7 +18,7 @@ bool BoundaryPoll::try_direction(const csp::Problem& problem,
   bool changed = false;
   for (std::size_t j = 0; j < free.size(); ++j) {
     const csp::VariableId var = free[j];
-    const double x = problem.variable(var).domain.clamp(anchor[var] + h * half_widths[j] * d[j]);
+    const double x = problem.domain(var).clamp(anchor[var] + h * half_widths[j] * d[j]);
     changed = changed || x != anchor[var];
     probe_[var] = x;
   }

@@ -45,7 +45,7 @@ GridSolver::GridSolver(std::string name, Options options)
     : name_(std::move(name)), options_(options) {}
 
 std::size_t GridSolver::axis_size(const csp::Problem& problem, csp::VariableId var) const {
-  const csp::Domain& d = problem.variable(var).domain;
+  const csp::Domain& d = problem.domain(var);
   if (d.is_discrete()) return d.size();
   if (d.lower() == d.upper()) return 1;
   return static_cast<std::size_t>(options_.points);
@@ -95,7 +95,7 @@ void GridSolver::solve_into(const csp::Problem& problem, std::span<const double>
   // The first point: every variable at its first grid value.
   result.best.resize(n);
   for (csp::VariableId v = 0; v < n; ++v) {
-    result.best[v] = axis_value(problem.variable(v).domain, sizes_[v], 0);
+    result.best[v] = axis_value(problem.domain(v), sizes_[v], 0);
   }
   csp::IncrementalEvaluator evaluator(problem, result.best);
   csp::Score best = problem.score(result.best);
@@ -113,7 +113,7 @@ void GridSolver::solve_into(const csp::Problem& problem, std::span<const double>
     for (csp::VariableId v = 0; v < n; ++v) {
       const bool wraps = ++digits_[v] == sizes_[v];
       if (wraps) digits_[v] = 0;
-      evaluator.assign(v, axis_value(problem.variable(v).domain, sizes_[v], digits_[v]));
+      evaluator.assign(v, axis_value(problem.domain(v), sizes_[v], digits_[v]));
       if (!wraps) break;
     }
     ++visited;

@@ -153,7 +153,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   // Greedy pass: each variable takes its best value if that improves the score.
   if (options_.greedy_start) {
     for (csp::VariableId v = 0; v < n && !stopped; ++v) {
-      const csp::Domain& d = problem.variable(v).domain;
+      const csp::Domain& d = problem.domain(v);
       if (out_of_budget(d.size())) break;
       csp::Score best_change;
       double best_value = evaluator.values()[v];

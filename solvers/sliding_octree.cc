@@ -66,7 +66,7 @@ void SlidingOctreeSolver::solve_into(const csp::Problem& problem, std::span<cons
   detail::prepare_start(problem, start, centre_);
   size_.resize(d);
   for (std::size_t k = 0; k < d; ++k) {
-    const csp::Domain& domain = problem.variable(static_cast<csp::VariableId>(k)).domain;
+    const csp::Domain& domain = problem.domain(static_cast<csp::VariableId>(k));
     size_[k] = options_.initial_size_absolute > 0
                    ? options_.initial_size_absolute
                    : options_.initial_size * (domain.upper() - domain.lower());
@@ -92,7 +92,7 @@ void SlidingOctreeSolver::solve_into(const csp::Problem& problem, std::span<cons
       for (std::size_t k = 0; k < d; ++k) {
         const double quarter = 0.25 * size_[k];
         const double x = centre_[k] + (((c >> k) & 1) ? quarter : -quarter);
-        candidate_[k] = problem.variable(static_cast<csp::VariableId>(k)).domain.clamp(x);
+        candidate_[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x);
       }
       const csp::Score s = problem.score(candidate_);
       ++evaluations;
@@ -105,7 +105,7 @@ void SlidingOctreeSolver::solve_into(const csp::Problem& problem, std::span<cons
     for (std::size_t k = 0; k < d; ++k) {
       size_[k] *= options_.scale;
       const double moved = centre_[k] + (result.best[k] - centre_[k]) * options_.slide;
-      centre_[k] = problem.variable(static_cast<csp::VariableId>(k)).domain.clamp(moved);
+      centre_[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(moved);
     }
   }
   if (passes < static_cast<std::uint64_t>(options_.passes)) result.stop = budget.reason();

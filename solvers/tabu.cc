@@ -67,7 +67,7 @@ TabuSolver::TabuSolver(std::string name, Options options)
 std::string TabuSolver::unsuitable_reason(const csp::Problem& problem) const {
   if (!problem.all_discrete()) return "needs discrete domains (every variable)";
   std::size_t entries = 0;
-  for (const csp::Variable& v : problem.variables()) entries += v.domain.size();
+  for (csp::VariableId v = 0; v < problem.num_variables(); ++v) entries += problem.domain(v).size();
   if (entries > kMaxTableEntries) {
     return "the move table would have " + std::to_string(entries) +
            " entries (sum of the domain sizes), more than 2^26";
@@ -87,7 +87,7 @@ void TabuSolver::solve_into(const csp::Problem& problem, std::span<const double>
   for (csp::ConstraintId c = 0; c < problem.num_constraints(); ++c) {
     const auto scope = problem.constraint(c).scope();
     for (csp::VariableId u : scope) {
-      total_work += static_cast<double>(problem.variable(u).domain.size()) *
+      total_work += static_cast<double>(problem.domain(u).size()) *
                     static_cast<double>(scope.size() - 1);
     }
   }

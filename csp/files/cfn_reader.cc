@@ -302,7 +302,7 @@ class CfnReader {
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), index);
         if (error != std::errc() || end != text.data() + text.size()) {
           fail(f.at, "unknown value " + v.dump() + " of variable " +
-                         problem_->variable(var).name + " in function " + f.name);
+                         problem_->variable_name(var) + " in function " + f.name);
         }
       }
     } else {
@@ -310,7 +310,7 @@ class CfnReader {
     }
     if (index < 0 || index >= size) {
       fail(f.at, "value index " + std::to_string(index) + " out of range for variable " +
-                     problem_->variable(var).name + " (" + std::to_string(size) +
+                     problem_->variable_name(var) + " (" + std::to_string(size) +
                      " values) in function " + f.name);
     }
     return static_cast<double>(index);

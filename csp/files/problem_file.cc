@@ -234,7 +234,7 @@ class Reader {
     for (std::size_t i = 0; i < scope.size(); ++i) {
       for (std::size_t j = 0; j < i; ++j) {
         if (scope[i] == scope[j]) {
-          scope_field.fail("variable '" + problem().variable(scope[i]).name +
+          scope_field.fail("variable '" + problem().variable_name(scope[i]) +
                            "' appears twice in the scope");
         }
       }

@@ -66,9 +66,9 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
     // salldiff compares value indices: equal indices mean equal values only when every
     // variable of the scope has the same domain.
     if (a) {
-      const Domain& first = problem.variable(c.scope()[0]).domain;
+      const Domain& first = problem.domain(c.scope()[0]);
       for (VariableId v : c.scope()) {
-        const Domain& d = problem.variable(v).domain;
+        const Domain& d = problem.domain(v);
         bool same = d.size() == first.size();
         for (std::size_t i = 0; same && i < d.size(); ++i)
           same = d.value_at(i) == first.value_at(i);
@@ -91,7 +91,7 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
   out << name << " " << problem.num_variables() << " " << max_domain << " "
       << problem.num_constraints() << " " << ub << "\n";
   for (VariableId v = 0; v < problem.num_variables(); ++v) {
-    out << (v ? " " : "") << problem.variable(v).domain.size();
+    out << (v ? " " : "") << problem.domain(v).size();
   }
   out << "\n";
   auto cost_text = [&](const Constraint& c, double violation) {
@@ -120,7 +120,7 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
       std::ostringstream line;
       bool inside = true;
       for (std::size_t p = 0; p < scope.size() && inside; ++p) {
-        const auto index = problem.variable(scope[p]).domain.index_of(t.tuple_value(i, p));
+        const auto index = problem.domain(scope[p]).index_of(t.tuple_value(i, p));
         inside = index.has_value();
         if (inside) line << *index << " ";
       }

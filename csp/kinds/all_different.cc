@@ -431,11 +431,15 @@ std::optional<AllDifferent::KeyRange> key_range_from_domains(const Problem& prob
                                                              std::span<const double> offsets) {
   constexpr double kMaxKeyMagnitude = 1e15;  // far inside the exactly representable integers
   double lo = 0, hi = 0;
+  const Domain* checked = nullptr;  // the last domain whose values were checked
   for (std::size_t i = 0; i < scope.size(); ++i) {
-    const Domain& d = problem.variable(scope[i]).domain;
+    const Domain& d = problem.domain(scope[i]);
     const double offset = offsets.empty() ? 0.0 : offsets[i];
     if (!d.is_discrete() || offset != std::floor(offset)) return std::nullopt;
-    if (d.kind() == DomainKind::kValueSet) {
+    // Variables of an add_variables batch share one Domain: its values are checked once,
+    // not once per variable (a value set of n values on n variables would be n^2).
+    if (&d != checked && d.kind() == DomainKind::kValueSet) {
+      checked = &d;
       for (std::size_t k = 0; k < d.size(); ++k) {
         const double v = d.value_at(k);
         if (v != std::floor(v)) return std::nullopt;

@@ -114,7 +114,7 @@ ConstraintKindInfo expression_kind() {
             const std::string& formula = field.as_string("a formula for 'formula'");
             std::vector<std::string> names;
             names.reserve(r.scope.size());
-            for (VariableId v : r.scope) names.push_back(r.problem.variable(v).name);
+            for (VariableId v : r.scope) names.push_back(r.problem.variable_name(v));
             try {
               return std::make_unique<ExpressionConstraint>(
                   r.scope, std::move(names), formula, &r.problem.parameters(), r.weight, r.hard);

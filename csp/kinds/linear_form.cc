@@ -107,8 +107,8 @@ double LinearForm::min_violation(std::span<const double> values,
 void set_bounds_from_domains(LinearForm& form, const Problem& problem) {
   std::vector<double> lower, upper;
   for (VariableId v : form.scope()) {
-    lower.push_back(problem.variable(v).domain.lower());
-    upper.push_back(problem.variable(v).domain.upper());
+    lower.push_back(problem.domain(v).lower());
+    upper.push_back(problem.domain(v).upper());
   }
   form.set_variable_bounds(std::move(lower), std::move(upper));
 }

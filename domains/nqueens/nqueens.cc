@@ -22,11 +22,13 @@ std::unique_ptr<csp::Problem> build_nqueens(std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) offsets[i] = sign * static_cast<double>(i);
     return offsets;
   };
-  const std::vector<double> rows = offsets_times(0), diagonals = offsets_times(1),
-                            anti_diagonals = offsets_times(-1);
-  for (const std::vector<double>* offsets : {&rows, &diagonals, &anti_diagonals}) {
-    auto range = csp::key_range_from_domains(*problem, columns, *offsets);
-    auto c = std::make_unique<csp::AllDifferent>(columns, *offsets,
+  // Each constraint gets its own scope and offsets, moved in, not copied (at 10^6 queens a
+  // copy is 12 MB of fresh pages).
+  for (const double sign : {0.0, 1.0, -1.0}) {
+    std::vector<double> offsets = offsets_times(sign);
+    const auto range = csp::key_range_from_domains(*problem, columns, offsets);
+    std::vector<csp::VariableId> scope = sign == -1.0 ? std::move(columns) : columns;
+    auto c = std::make_unique<csp::AllDifferent>(std::move(scope), std::move(offsets),
                                                  csp::AllDifferent::Measure::kVariables,
                                                  /*weight=*/1.0, /*hard=*/true, range);
     problem->add_constraint(std::move(c));

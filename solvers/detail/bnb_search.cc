@@ -14,14 +14,14 @@ void BranchAndBoundSearch::setup(const csp::Problem& problem, std::span<const do
   offset_.assign(n_ + 1, 0);
   std::uint32_t widest = 0;
   for (std::size_t v = 0; v < n_; ++v) {
-    const auto d = static_cast<std::uint32_t>(problem.variable(v).domain.size());
+    const auto d = static_cast<std::uint32_t>(problem.domain(v).size());
     offset_[v + 1] = offset_[v] + d;
     widest = std::max(widest, d);
   }
   const std::size_t slots = offset_[n_];
   domain_values_.resize(slots);
   for (std::size_t v = 0; v < n_; ++v) {
-    const csp::Domain& d = problem.variable(v).domain;
+    const csp::Domain& d = problem.domain(v);
     for (std::size_t i = 0; i < d.size(); ++i) domain_values_[offset_[v] + i] = d.value_at(i);
   }
   values_.resize(n_);

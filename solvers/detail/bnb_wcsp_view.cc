@@ -57,11 +57,11 @@ std::string build_wcsp_view(const csp::Problem& problem, WcspView& view) {
   view.offset.assign(n + 1, 0);
   for (std::size_t v = 0; v < n; ++v) {
     view.offset[v + 1] =
-        view.offset[v] + static_cast<std::uint32_t>(problem.variable(v).domain.size());
+        view.offset[v] + static_cast<std::uint32_t>(problem.domain(v).size());
   }
   view.values.resize(view.offset[n]);
   for (std::size_t v = 0; v < n; ++v) {
-    const csp::Domain& d = problem.variable(v).domain;
+    const csp::Domain& d = problem.domain(v);
     for (std::size_t i = 0; i < d.size(); ++i) view.values[view.offset[v] + i] = d.value_at(i);
   }
   view.unary.assign(view.offset[n], 0);

@@ -61,8 +61,7 @@ ConditionedProblem::ConditionedProblem(const csp::Problem& problem, std::span<co
   constexpr csp::VariableId kFixed = ~csp::VariableId{0};
   std::vector<csp::VariableId> sub_id(problem.num_variables(), kFixed);
   for (csp::VariableId v : free_) {
-    const csp::Variable& variable = problem.variable(v);
-    sub_id[v] = sub_->add_variable(variable.name, variable.domain);
+    sub_id[v] = sub_->add_variable(problem.variable_name(v), problem.domain(v));
   }
   // Each constraint on a free variable once: the first free variable of its scope adds it.
   for (csp::VariableId v : free_) {

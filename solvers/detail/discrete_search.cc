@@ -106,7 +106,7 @@ void DiscreteSearch::begin_dealt_run(csp::Assignment values) {
 void DiscreteSearch::randomise(csp::Assignment& values) {
   for (csp::VariableId v = 0; v < n_; ++v) {
     if (group_of_[v] != kNoGroup) continue;
-    const csp::Domain& d = problem_.variable(v).domain;
+    const csp::Domain& d = problem_.domain(v);
     values[v] = d.value_at(random_.index(d.size()));
   }
   for (const PermutationGroup& g : groups_) deal_group(g, values);
@@ -114,6 +114,9 @@ void DiscreteSearch::randomise(csp::Assignment& values) {
 }
 
 void DiscreteSearch::begin_run(csp::Assignment values) {
+  // The old evaluator goes first: at a million variables each holds tens of MB of counts,
+  // and two alive at once would double the search's peak memory.
+  evaluator_.reset();
   evaluator_ = std::make_unique<csp::IncrementalEvaluator>(problem_, std::move(values), constant_);
   ++evaluations_;
   run_best_ = evaluator_->score();

@@ -33,7 +33,7 @@ void DiscreteSearch::swap(csp::VariableId v, csp::VariableId j) {
 }
 
 bool DiscreteSearch::value_step(csp::VariableId v, bool greedy) {
-  const csp::Domain& d = problem_.variable(v).domain;
+  const csp::Domain& d = problem_.domain(v);
   const std::size_t size = d.size();
   if (size < 2) return false;
   const double current = evaluator_->values()[v];

@@ -10,11 +10,11 @@ MoveTable::MoveTable(const csp::Problem& problem) : problem_(problem) {
   const std::size_t n = problem.num_variables();
   offset_.assign(n + 1, 0);
   for (csp::VariableId v = 0; v < n; ++v) {
-    offset_[v + 1] = offset_[v] + static_cast<std::uint32_t>(problem.variable(v).domain.size());
+    offset_[v + 1] = offset_[v] + static_cast<std::uint32_t>(problem.domain(v).size());
   }
   domain_values_.resize(offset_.back());
   for (csp::VariableId v = 0; v < n; ++v) {
-    const csp::Domain& d = problem.variable(v).domain;
+    const csp::Domain& d = problem.domain(v);
     for (std::size_t a = 0; a < d.size(); ++a) domain_values_[offset_[v] + a] = d.value_at(a);
   }
   rows_.assign(offset_.back(), csp::Score{});
@@ -43,7 +43,7 @@ void MoveTable::rebuild(std::span<const double> values) {
   values_.assign(values.begin(), values.end());
   index_.resize(n);
   for (csp::VariableId v = 0; v < n; ++v) {
-    index_[v] = static_cast<std::uint32_t>(*problem_.variable(v).domain.index_of(values_[v]));
+    index_[v] = static_cast<std::uint32_t>(*problem_.domain(v).index_of(values_[v]));
   }
   states_.clear();
   states_.resize(m);

@@ -9,6 +9,7 @@ namespace sightline::solvers::detail {
 namespace {
 
 bool same_values(const csp::Domain& a, const csp::Domain& b) {
+  if (&a == &b) return true;  // one domain shared by a batch of variables (add_variables)
   if (a.size() != b.size() || a.lower() != b.lower() || a.upper() != b.upper()) return false;
   if (a.kind() == csp::DomainKind::kIntegerRange && b.kind() == csp::DomainKind::kIntegerRange) {
     return true;
@@ -80,6 +81,8 @@ void pin(const csp::Problem& problem, const std::vector<char>& hard_unary,
     variable_pinned[static_cast<std::size_t>(
         std::find(group.variables.begin(), group.variables.end(), v) - group.variables.begin())] = 1;
   }
+  group.free.reserve(group.variables.size() - group.pinned.size());
+  group.free_values.reserve(group.values.size() - group.pinned.size());
   for (std::size_t i = 0; i < group.variables.size(); ++i) {
     if (!variable_pinned[i]) group.free.push_back(group.variables[i]);
     if (!value_pinned[i]) group.free_values.push_back(group.values[i]);
@@ -100,11 +103,11 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
     }
     const auto scope = all_different->scope();
     if (scope.size() < 2) continue;
-    const csp::Domain& first = problem.variable(scope[0]).domain;
+    const csp::Domain& first = problem.domain(scope[0]);
     if (!first.is_discrete() || first.size() != scope.size()) continue;
     bool fits = true;
     for (csp::VariableId v : scope) {
-      if (taken[v] || !same_values(first, problem.variable(v).domain)) {
+      if (taken[v] || !same_values(first, problem.domain(v))) {
         fits = false;
         break;
       }

@@ -60,7 +60,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
     }
     ++iterations;
     for (std::size_t k = 0; k < n; ++k) {
-      const csp::Domain& d = problem.variable(static_cast<csp::VariableId>(k)).domain;
+      const csp::Domain& d = problem.domain(static_cast<csp::VariableId>(k));
       candidate[k] = perturb(d, current[k], radius, random);
     }
     const csp::Score there = problem.score(candidate);
@@ -91,7 +91,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
     }
     ++restarts_used;
     for (std::size_t k = 0; k < n; ++k) {
-      current[k] = uniform_in(problem.variable(static_cast<csp::VariableId>(k)).domain, random);
+      current[k] = uniform_in(problem.domain(static_cast<csp::VariableId>(k)), random);
     }
     here = problem.score(current);
     ++evaluations;

@@ -14,7 +14,7 @@ void prepare_start(const csp::Problem& problem, std::span<const double> start,
   }
   out.resize(start.size());
   for (std::size_t i = 0; i < start.size(); ++i) {
-    out[i] = problem.variable(static_cast<csp::VariableId>(i)).domain.clamp(start[i]);
+    out[i] = problem.domain(static_cast<csp::VariableId>(i)).clamp(start[i]);
   }
 }
 

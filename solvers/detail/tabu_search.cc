@@ -213,7 +213,7 @@ class TabuSearch {
     for (std::size_t k = 0; k < strength && k < n_; ++k) {
       std::swap(order_[k], order_[k + random_.index(n_ - k)]);
       const csp::VariableId v = order_[k];
-      const csp::Domain& d = problem_.variable(v).domain;
+      const csp::Domain& d = problem_.domain(v);
       values[v] = d.value_at(random_.index(d.size()));
     }
     if (!rebuild(values)) return;

@@ -205,11 +205,11 @@ void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const dou
   const bool found = indices.size() == problem.num_variables();
   if (found) {
     for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
-      const csp::Domain& d = problem.variable(v).domain;
+      const csp::Domain& d = problem.domain(v);
       const double index = indices[v];
       if (!(index >= 0 && index < static_cast<double>(d.size()) && index == std::floor(index))) {
         throw std::runtime_error("toulbar2: solution value " + std::to_string(index) +
-                                 " out of range for variable " + problem.variable(v).name);
+                                 " out of range for variable " + problem.variable_name(v));
       }
       result.best[v] = d.value_at(static_cast<std::size_t>(index));
     }

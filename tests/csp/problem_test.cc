@@ -154,9 +154,81 @@ TEST(Problem, RefusesBatchNamesThatAnotherVariableHasAlready) {
     EXPECT_THROW(p.add_variables("q1", 5, Domain::integer_range(0, 1)), std::invalid_argument);
     EXPECT_THROW(p.add_variables("q", 1, Domain::integer_range(0, 1)), std::invalid_argument);
     EXPECT_NO_THROW(p.add_variables("r", 3, Domain::integer_range(0, 1)));
+    EXPECT_NO_THROW(p.add_variables("qa", 3, Domain::integer_range(0, 1)));  // never digits
+    EXPECT_THROW(p.add_variables("", 3, Domain::integer_range(0, 1)), std::invalid_argument);
+    EXPECT_EQ(p.find_variable("qa2"), 25u);
+    EXPECT_EQ(p.find_variable("q19"), 19u);
+    EXPECT_EQ(p.find_variable("r0"), 20u);
   }
   Problem p;
   EXPECT_THROW(p.add_variables("", 3, Domain::integer_range(0, 1)), std::invalid_argument);
+}
+
+TEST(Problem, GeneratesBatchNamesAndSharedDomainsOnDemandAsSingleAddsWould) {
+  // The same variables added as batches and one at a time: every name, domain and lookup
+  // agrees, whichever accessor is used.
+  Problem batched, single;
+  batched.add_variable("a", Domain::integer_range(0, 1));
+  batched.add_variables("x", 105, Domain::integer_range(-3, 7));
+  batched.add_variable("b", Domain::value_set({1, 4, 9}));
+  batched.add_variables("y_", 3, Domain::real_interval(0, 1));
+  single.add_variable("a", Domain::integer_range(0, 1));
+  for (int i = 0; i < 105; ++i) single.add_variable("x" + std::to_string(i), Domain::integer_range(-3, 7));
+  single.add_variable("b", Domain::value_set({1, 4, 9}));
+  for (int i = 0; i < 3; ++i) single.add_variable("y_" + std::to_string(i), Domain::real_interval(0, 1));
+  ASSERT_EQ(batched.num_variables(), single.num_variables());
+  for (VariableId v = 0; v < single.num_variables(); ++v) {
+    const std::string name = single.variable(v).name;
+    EXPECT_EQ(batched.variable_name(v), name);
+    EXPECT_EQ(batched.variable(v).name, name);
+    EXPECT_EQ(batched.domain(v).describe(), single.domain(v).describe());
+    EXPECT_EQ(batched.variable(v).domain.describe(), single.variable(v).domain.describe());
+    EXPECT_EQ(batched.find_variable(name), v) << name;
+  }
+  EXPECT_EQ(batched.variables().size(), single.num_variables());
+  EXPECT_FALSE(batched.all_discrete());
+  EXPECT_FALSE(batched.find_variable("x105"));
+  EXPECT_FALSE(batched.find_variable("x007"));
+  EXPECT_FALSE(batched.find_variable("y_3"));
+  EXPECT_FALSE(batched.find_variable("x"));
+}
+
+TEST(Problem, SetDomainOnABatchVariableLeavesItsNeighboursAlone) {
+  Problem p;
+  const VariableId first = p.add_variables("q", 4, Domain::integer_range(0, 3));
+  EXPECT_EQ(p.variable(first + 2).domain.size(), 4u);  // the records exist from here on
+  p.set_domain(first + 2, Domain::integer_range(5, 6));
+  p.set_domain(first + 2, Domain::integer_range(5, 7));  // its own domain, replaced
+  for (VariableId v = first; v < first + 4; ++v) {
+    const std::size_t expected = v == first + 2 ? 3u : 4u;
+    EXPECT_EQ(p.domain(v).size(), expected);
+    EXPECT_EQ(p.variable(v).domain.size(), expected);
+  }
+  // A batch whose every variable got its own domain no longer counts its old one.
+  Problem q;
+  q.add_variables("r", 2, Domain::real_interval(0, 1));
+  EXPECT_FALSE(q.all_discrete());
+  q.set_domain(0, Domain::integer_range(0, 1));
+  q.set_domain(1, Domain::integer_range(0, 1));
+  EXPECT_TRUE(q.all_discrete());
+}
+
+TEST(Problem, IncidencesFollowConstraintsAddedAfterAFirstLookUp) {
+  Problem p;
+  const VariableId first = p.add_variables("q", 5, Domain::integer_range(0, 4));
+  p.add_constraint(std::make_unique<NotEqual>(first + 3, first + 1));
+  ASSERT_EQ(p.incidences(first + 1).size(), 1u);
+  EXPECT_EQ(p.incidences(first + 1)[0].position, 1u);
+  EXPECT_TRUE(p.incidences(first + 4).empty());
+  const VariableId late = p.add_variable("late", Domain::integer_range(0, 4));
+  p.add_constraint(std::make_unique<NotEqual>(first + 1, late));
+  const auto list = p.incidences(first + 1);
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0].constraint, 0u);
+  EXPECT_EQ(list[1].constraint, 1u);
+  EXPECT_EQ(list[1].position, 0u);
+  ASSERT_EQ(p.incidences(late).size(), 1u);
+  EXPECT_EQ(p.incidences(late)[0].position, 1u);
 }
 
 TEST(Problem, CheckAssignmentNamesTheOffendingVariable) {

@@ -11,7 +11,7 @@ OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView&
 
 Eigen::Vector3d OctreeSearch::clamp(const Eigen::Vector3d& p) const {
   Eigen::Vector3d q;
-  for (int i = 0; i < 3; ++i) q[i] = problem_->variable(i).domain.clamp(p[i]);
+  for (int i = 0; i < 3; ++i) q[i] = problem_->domain(i).clamp(p[i]);
   return q;
 }
 
@@ -68,7 +68,7 @@ double OctreeSearch::first_half_size(double requested) const {
   if (requested > 0) return requested;
   double half = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
-    const auto& d = problem_->variable(i).domain;
+    const auto& d = problem_->domain(i);
     half = std::min(half, 0.5 * (d.upper() - d.lower()));
   }
   return half;

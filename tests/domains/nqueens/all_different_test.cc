@@ -168,6 +168,24 @@ TEST(AllDifferent, KeyRangeCoversEveryKeyOfIntegerDomains) {
   EXPECT_FALSE(key_range_from_domains(p, ids(3), {}).has_value());
 }
 
+TEST(AllDifferent, KeyRangeChecksEachDomainOfABatchAndOfSingleVariables) {
+  // A batch shares one Domain (checked once); a variable added alone after it has its own,
+  // and a fractional value there must still make the range unavailable.
+  Problem p;
+  const VariableId first = p.add_variables("x", 4, Domain::value_set({1, 5, 8}));
+  const std::vector<VariableId> batch = {first, first + 1, first + 2, first + 3};
+  const auto range = key_range_from_domains(p, batch, std::vector<double>{0, 1, 2, 3});
+  ASSERT_TRUE(range.has_value());
+  EXPECT_EQ(range->lo, 1);
+  EXPECT_EQ(range->hi, 11);
+  const VariableId odd = p.add_variable("odd", Domain::value_set({1, 2.5}));
+  EXPECT_FALSE(key_range_from_domains(p, std::vector<VariableId>{first, first + 1, odd}, {})
+                   .has_value());
+  p.add_variables("y", 2, Domain::value_set({0, 0.5}));
+  EXPECT_FALSE(key_range_from_domains(p, std::vector<VariableId>{first, odd + 1, odd + 2}, {})
+                   .has_value());
+}
+
 class AllDifferentKind : public ::testing::Test {
  protected:
   AllDifferentKind() {
