@@ -3,11 +3,17 @@
 # chase camera as published against Ali's occlusion-aware octree, the generic solvers and the
 # baselines, on the thesis scenes) into out/thesis, printing its Markdown summary; the report
 # is out/thesis/report.html. Then the same on walks through real Quake III maps (the levels
-# suite, out/levels). Then the toy-domain solver comparison.
+# suite, out/levels). Then reactive against anticipating cameras on the thesis scenes, the
+# switchbacks, colonnade and mover scenes (out/anticipation) and on the level walks
+# (out/anticipation-levels). Then the toy-domain solver comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./build/apps/sightline run experiments/suites/thesis.yaml --out out/thesis
 echo
 ./build/apps/sightline run experiments/suites/levels.yaml --out out/levels
+echo
+./build/apps/sightline run experiments/suites/anticipation.yaml --out out/anticipation
+echo
+./build/apps/sightline run experiments/suites/anticipation-levels.yaml --out out/anticipation-levels
 echo
 ./build/apps/sightline compare
