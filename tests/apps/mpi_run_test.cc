@@ -295,6 +295,25 @@ TEST(MpiRun, FinishesASuiteStartedByTheThreadPool) {
             without_timing(suite, read_text(dir.path("fresh/results.csv"))));
 }
 
+TEST(MpiRun, RefusesAFolderHoldingAnotherSuitesRunsAndKeepsThem) {
+  SKIP_WITHOUT_MPI();
+  ScratchDir dir("mpi-foreign");
+  const std::string slow_file = dir.write("slow.yaml", kSlowSuite);
+  const std::string tiny_file = dir.write("suite.yaml", kTinySuite);
+  // The tiny suite's folder, finished locally.
+  run_suite(read_suite_file(tiny_file), local(dir.path("out")));
+  const std::map<std::string, Written> before = finished_runs(dir.path("out"));
+  ASSERT_EQ(before.size(), 8u);
+  // Another suite into it under MPI: refused by rank 0 with both suites named, every rank
+  // exits, nothing of the folder is touched.
+  const Outcome r = mpi_run(3, slow_file, dir.path("out"));
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.status, 124) << "the job hung: " << r.output;
+  EXPECT_NE(r.output.find("'tiny'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'slow'"), std::string::npos) << r.output;
+  EXPECT_EQ(finished_runs(dir.path("out")), before);
+}
+
 TEST(MpiRun, RefusesAnUnwritableFolderOnceAndEveryRankExits) {
   SKIP_WITHOUT_MPI();
   ScratchDir dir("mpi-unwritable");
