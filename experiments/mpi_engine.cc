@@ -1,5 +1,7 @@
 #include "experiments/mpi_engine.h"
 
+#include "experiments/output_text.h"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -128,20 +130,6 @@ std::uint64_t ids_hash(const std::vector<SuiteRun>& runs) {
     }
   }
   return h;
-}
-
-// The same write-then-rename as the local runner's, for summary.md.
-void write_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
 }
 
 std::string clock_text(double seconds) {

@@ -1,5 +1,7 @@
 #include "experiments/suite_ranking.h"
 
+#include "experiments/output_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,23 +18,10 @@ namespace {
 
 const double kInfinity = std::numeric_limits<double>::infinity();
 
-std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
 std::string fixed(double v, int decimals) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
   return buffer;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
 }
 
 std::vector<std::string> camera_labels(const Suite& suite) {
@@ -305,9 +294,9 @@ std::string ranking_markdown(const Suite& suite, const SuiteOutcome& outcome) {
         out << '\n';
       }
       out << "| Friedman chi-square |";
-      for (const FriedmanResult& f : friedman) out << ' ' << number(f.chi_square) << " |";
+      for (const FriedmanResult& f : friedman) out << ' ' << statistic_text(f.chi_square) << " |";
       out << "\n| Friedman p |";
-      for (const FriedmanResult& f : friedman) out << ' ' << number(f.p_value) << " |";
+      for (const FriedmanResult& f : friedman) out << ' ' << statistic_text(f.p_value) << " |";
       out << "\n\n";
     }
 
@@ -327,8 +316,8 @@ std::string ranking_markdown(const Suite& suite, const SuiteOutcome& outcome) {
       for (const RankingTable* t : family) {
         const PairOutcome p = compare_pair(*t, c->a, c->b);
         out << "| " << t->metric << " | " << p.subjects << " | " << p.test.n << " | " << p.a_better
-            << " | " << p.b_better << " | " << number(p.test.w_plus) << " | "
-            << number(p.test.w_minus) << " | " << number(p.test.p_value)
+            << " | " << p.b_better << " | " << statistic_text(p.test.w_plus) << " | "
+            << statistic_text(p.test.w_minus) << " | " << statistic_text(p.test.p_value)
             << (p.test.n > 0 ? (p.test.exact ? " (exact)" : " (normal)") : "") << " | "
             << direction(p, c->a, c->b) << " |\n";
       }
@@ -349,18 +338,19 @@ std::string ranking_csv_rows(const Suite& suite, const SuiteOutcome& outcome) {
       const FriedmanResult f = friedman_test(rows);
       for (std::size_t j = 0; j < t.solvers.size(); ++j)
         out << t.kind << ",*," << csv_field(t.solvers[j]) << tail << "average_rank,"
-            << number(f.average_ranks[j]) << '\n';
-      out << t.kind << ",*,*" << tail << "friedman_chi_square," << number(f.chi_square) << '\n'
-          << t.kind << ",*,*" << tail << "friedman_p," << number(f.p_value) << '\n'
+            << statistic_text(f.average_ranks[j]) << '\n';
+      out << t.kind << ",*,*" << tail << "friedman_chi_square," << statistic_text(f.chi_square)
+          << '\n'
+          << t.kind << ",*,*" << tail << "friedman_p," << statistic_text(f.p_value) << '\n'
           << t.kind << ",*,*" << tail << "friedman_subjects," << f.blocks << '\n';
     }
     for (const SuiteComparison* c : comparisons_of(suite, t)) {
       const PairOutcome p = compare_pair(t, c->a, c->b);
       const std::string head = t.kind + ",*," + csv_field(c->a + " vs " + c->b) + tail;
       out << head << "wilcoxon_n," << p.test.n << '\n'
-          << head << "wilcoxon_w_a_better," << number(p.test.w_plus) << '\n'
-          << head << "wilcoxon_w_b_better," << number(p.test.w_minus) << '\n'
-          << head << "wilcoxon_p," << number(p.test.p_value) << '\n';
+          << head << "wilcoxon_w_a_better," << statistic_text(p.test.w_plus) << '\n'
+          << head << "wilcoxon_w_b_better," << statistic_text(p.test.w_minus) << '\n'
+          << head << "wilcoxon_p," << statistic_text(p.test.p_value) << '\n';
     }
   }
   return out.str();

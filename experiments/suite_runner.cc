@@ -1,5 +1,7 @@
 #include "experiments/suite_runner.h"
 
+#include "experiments/output_text.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -51,21 +53,6 @@ std::string one_line(std::string text) {
   return text;
 }
 
-// Writes `text` to path + ".tmp" and renames it over `path`, so a reader sees either the
-// old file, no file, or the whole new one, never half of it.
-void write_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
-}
-
 std::string run_file_text(const Suite& suite, const RunResult& r) {
   std::ostringstream out;
   out << "id=" << r.id << "\nkind=" << r.kind << "\nsubject=" << one_line(r.subject)
@@ -85,13 +72,6 @@ std::string run_file_text(const Suite& suite, const RunResult& r) {
   }
   out << "end=1\n";  // a file without this line was cut short
   return out.str();
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
 }
 
 std::string clock_text(double seconds) {

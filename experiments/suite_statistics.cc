@@ -1,5 +1,7 @@
 #include "experiments/suite_statistics.h"
 
+#include "experiments/output_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,19 +16,6 @@
 
 namespace sightline::experiments {
 namespace {
-
-std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 struct MetricSummary {
   std::string metric;
@@ -125,21 +114,22 @@ std::string statistics_markdown(const Suite& suite, const SuiteOutcome& outcome)
     for (const Group& g : s.groups)
       for (const MetricSummary& m : g.metrics)
         out << "| " << g.subject << " | " << g.solver << " | " << g.profile << " | " << m.metric
-            << " | " << m.n << " | " << number(m.median) << " [" << number(m.median_ci.low) << ", "
-            << number(m.median_ci.high) << "] | " << number(m.mean) << " [" << number(m.mean_ci.low)
-            << ", " << number(m.mean_ci.high) << "] |\n";
+            << " | " << m.n << " | " << statistic_text(m.median) << " ["
+            << statistic_text(m.median_ci.low) << ", " << statistic_text(m.median_ci.high) << "] | "
+            << statistic_text(m.mean) << " [" << statistic_text(m.mean_ci.low) << ", "
+            << statistic_text(m.mean_ci.high) << "] |\n";
     out << '\n';
   }
   if (!s.par2.empty()) {
     out << "### PAR-2\n\n"
            "Mean time over each solver's problem runs, an unsolved run (infeasible, failed, or "
            "stopped by a limit) counting twice the time limit of "
-        << number(s.par2.front().time_limit)
+        << statistic_text(s.par2.front().time_limit)
         << " s (the suite's toy time limit, else the slowest run's time).\n\n"
            "| solver | runs | solved | PAR-2 s |\n| --- | ---: | ---: | ---: |\n";
     for (const Par2Row& p : s.par2)
-      out << "| " << p.solver << " | " << p.runs << " | " << p.solved << " | " << number(p.par2)
-          << " |\n";
+      out << "| " << p.solver << " | " << p.runs << " | " << p.solved << " | "
+          << statistic_text(p.par2) << " |\n";
     out << '\n';
   }
   out << ranking_markdown(suite, outcome);  // average ranks, Friedman, Wilcoxon on demand
@@ -162,15 +152,15 @@ std::string statistics_csv(const Suite& suite, const SuiteOutcome& outcome) {
                                                      {"median_ci_low", m.median_ci.low},
                                                      {"median_ci_high", m.median_ci.high}};
       for (const auto& [statistic, v] : rows)
-        out << prefix << m.metric << ',' << statistic << ',' << number(v) << '\n';
+        out << prefix << m.metric << ',' << statistic << ',' << statistic_text(v) << '\n';
     }
   }
   for (const Par2Row& p : s.par2) {
     const std::string prefix = "toy,*," + csv_field(p.solver) + ",-,time_s,";
     out << prefix << "runs," << p.runs << '\n'
         << prefix << "solved," << p.solved << '\n'
-        << prefix << "par2_s," << number(p.par2) << '\n'
-        << prefix << "time_limit_s," << number(p.time_limit) << '\n';
+        << prefix << "par2_s," << statistic_text(p.par2) << '\n'
+        << prefix << "time_limit_s," << statistic_text(p.time_limit) << '\n';
   }
   out << ranking_csv_rows(suite, outcome);
   return out.str();

@@ -1,5 +1,7 @@
 #include "experiments/time_profiles.h"
 
+#include "experiments/output_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,19 +11,6 @@
 
 namespace sightline::experiments {
 namespace {
-
-std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 // Labels in the order they first appear among `runs`.
 template <typename Field>
@@ -112,7 +101,7 @@ std::string cactus_csv(const TimeProfiles& profiles) {
   for (std::size_t s = 0; s < profiles.solvers.size(); ++s)
     for (const CactusPoint& point : profiles.cactus[s])
       out << csv_field(profiles.solvers[s]) << ',' << point.runs_solved << ','
-          << number(point.seconds) << '\n';
+          << statistic_text(point.seconds) << '\n';
   return out.str();
 }
 
@@ -125,8 +114,8 @@ std::string profiles_csv(const TimeProfiles& profiles) {
     fractions.push_back(performance_profile_at(profiles.ratios, tau));
   for (std::size_t s = 0; s < profiles.solvers.size(); ++s)
     for (std::size_t t = 0; t < profiles.taus.size(); ++t)
-      out << csv_field(profiles.solvers[s]) << ',' << number(profiles.taus[t]) << ','
-          << number(fractions[t][s]) << '\n';
+      out << csv_field(profiles.solvers[s]) << ',' << statistic_text(profiles.taus[t]) << ','
+          << statistic_text(fractions[t][s]) << '\n';
   return out.str();
 }
 
