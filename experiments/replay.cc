@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "experiments/html_text.h"
 #include "experiments/replay_sources.h"
 
 namespace sightline::experiments {
@@ -46,21 +47,6 @@ std::string base64_of(const void* data, std::size_t size) {
 template <typename T>
 std::string base64_of(const std::vector<T>& values) {
   return base64_of(values.data(), values.size() * sizeof(T));
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // A JSON string literal; '<' and '>' escaped so "</script>" can never end the data block.
@@ -351,7 +337,7 @@ std::string replay_head(const ReplayOptions& options) {
     out += "<script class='replay-three'>" + three + "</script>\n";
   } else {
     write_file(std::filesystem::path(options.assets_dir) / "three.js", three);
-    out += "<script class='replay-three' src='" + escape(options.assets_href + "/three.js") +
+    out += "<script class='replay-three' src='" + html_escape(options.assets_href + "/three.js") +
            "'></script>\n";
   }
   out += "<script class='replay-head'>";
@@ -383,7 +369,8 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
                    "(window.sightlineReplayLevels=window.sightlineReplayLevels||{})[\"" + key +
                        "\"]=" + level_json(level->mesh) + ";\n");
         level_block = "<script type='application/json' class='replay-level' data-level='" + key +
-                      "' data-src='" + escape(options.assets_href + "/replay-level-" + key + ".js") +
+                      "' data-src='" +
+                      html_escape(options.assets_href + "/replay-level-" + key + ".js") +
                       "'>null</script>";
       }
     }
@@ -391,8 +378,8 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
   std::ostringstream out;
   std::string run_ids;
   for (const ReplayRun& run : scene.runs) run_ids += (run_ids.empty() ? "" : " ") + run.id;
-  out << "<section class='replay' data-scene='" << escape(scene.id) << "' data-runs='"
-      << escape(run_ids) << "'";
+  out << "<section class='replay' data-scene='" << html_escape(scene.id) << "' data-runs='"
+      << html_escape(run_ids) << "'";
   if (options.assets_dir.empty()) {
     out << ">" << level_block << "<script type='application/json' class='replay-data'>" << json
         << "</script>";
@@ -401,9 +388,9 @@ std::string replay_section(const ReplayScene& scene, const ReplayOptions& option
     write_file(std::filesystem::path(options.assets_dir) / file,
                "(window.sightlineReplayData=window.sightlineReplayData||{})[" +
                    json_string(scene.id) + "]=" + json + ";\n");
-    out << " data-src='" << escape(options.assets_href + "/" + file) << "'>" << level_block;
+    out << " data-src='" << html_escape(options.assets_href + "/" + file) << "'>" << level_block;
   }
-  out << "<div class='replay-placeholder'>3D replay of " << escape(scene.scene->name()) << " ("
+  out << "<div class='replay-placeholder'>3D replay of " << html_escape(scene.scene->name()) << " ("
       << scene.runs.size() << " run" << (scene.runs.size() == 1 ? "" : "s")
       << "): builds when scrolled into view, or click here.</div></section>\n";
   return out.str();
@@ -414,12 +401,13 @@ std::string replay_page(const std::string& title, const std::vector<ReplayScene>
   ReplayOptions options = page_options;  // a page of its own: no level written yet
   options.levels_on_page = std::make_shared<std::set<std::string>>();
   std::string out = "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>" +
-                    escape(title) + "</title>";
+                    html_escape(title) + "</title>";
   out += "<style>body{font-family:system-ui,sans-serif;margin:24px;color:#222}</style>";
   out += replay_head(options);
-  out += "</head><body><h1>" + escape(title) + "</h1>\n";
+  out += "</head><body><h1>" + html_escape(title) + "</h1>\n";
   for (const ReplayScene& scene : scenes) {
-    out += "<h2>Scene <code>" + escape(scene.scene ? scene.scene->name() : scene.id) + "</code></h2>\n";
+    out += "<h2>Scene <code>" + html_escape(scene.scene ? scene.scene->name() : scene.id) +
+           "</code></h2>\n";
     out += replay_section(scene, options);
   }
   out += "</body></html>\n";

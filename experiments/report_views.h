@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "domains/camera/scene.h"
+#include "experiments/html_text.h"
 #include "experiments/trace.h"
 
 namespace sightline::experiments {
@@ -52,7 +53,4 @@ std::string line_plot_svg(const std::string& title, const std::vector<PlotSeries
 
 // RFC 4648 base64, for data: URIs.
 std::string base64(const std::vector<unsigned char>& bytes);
-// Escapes &, <, >, " for HTML text and attributes.
-std::string html_escape(const std::string& text);
-
 }  // namespace sightline::experiments

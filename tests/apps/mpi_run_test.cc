@@ -22,12 +22,15 @@
 
 #include "experiments/suite.h"
 #include "experiments/suite_runner.h"
+#include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 
 namespace sightline::experiments {
 namespace {
 
 using testing::ScratchDir;
+using testing::read_text;
+using testing::without_timing;
 namespace fs = std::filesystem;
 
 struct Outcome {
@@ -66,37 +69,6 @@ Outcome mpi_run(int ranks, const std::string& suite, const std::string& out,
     if (!mpirun_installed()) GTEST_SKIP() << "mpirun is not installed";            \
     if (!SIGHTLINE_BUILT_WITH_MPI) GTEST_SKIP() << "this build has no MPI engine"; \
   } while (false)
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// results.csv with the timing columns blanked: they measure the machine, not the run.
-std::string without_timing(const Suite& suite, const std::string& csv) {
-  const std::vector<std::string> columns = result_columns(suite);
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::string field;
-    std::size_t c = 0;
-    bool quoted = false;
-    for (char ch : line + ",") {
-      if (ch == '"') quoted = !quoted;
-      if (ch == ',' && !quoted) {
-        out += (c < columns.size() && (is_timing_column(columns[c]) || is_provenance_column(columns[c])) ? "<t>" : field) + ",";
-        field.clear();
-        ++c;
-      } else {
-        field += ch;
-      }
-    }
-    out += '\n';
-  }
-  return out;
-}
 
 // What identifies one writing of a result file: its inode (a rename puts a new one in
 // place), its modification time in nanoseconds and its text.

@@ -17,14 +17,8 @@
 namespace sightline::test {
 namespace {
 
+using experiments::testing::read_text;
 using experiments::testing::ScratchDir;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // results.csv as rows of column -> value (no quoted commas in these suites).
 std::vector<std::map<std::string, std::string>> read_rows(const std::string& path) {

@@ -21,20 +21,16 @@
 #include "experiments/isolated_run.h"
 #include "experiments/output_manifest.h"
 #include "experiments/suite_runner.h"
+#include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 
 namespace sightline::experiments {
 namespace {
 
 using testing::ScratchDir;
+using testing::read_text;
+using testing::without_timing;
 namespace fs = std::filesystem;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // Sets SIGHTLINE_TEST_FAULT for the children this test starts, and clears it after.
 class TestFault {
@@ -56,32 +52,6 @@ RunnerOptions isolated_options(const std::string& out) {
 std::map<std::string, RunResult> by_subject_and_solver(const SuiteOutcome& outcome) {
   std::map<std::string, RunResult> out;
   for (const RunResult& r : outcome.results) out[r.subject + " " + r.solver] = r;
-  return out;
-}
-
-// results.csv with the timing and provenance columns blanked.
-std::string comparable(const Suite& suite, const std::string& csv) {
-  const std::vector<std::string> columns = result_columns(suite);
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::string field;
-    std::size_t c = 0;
-    bool quoted = false;
-    for (char ch : line + ",") {
-      if (ch == '"') quoted = !quoted;
-      if (ch == ',' && !quoted) {
-        const bool blank = c < columns.size() &&
-                           (is_timing_column(columns[c]) || is_provenance_column(columns[c]));
-        out += (blank ? "<x>" : field) + ",";
-        field.clear();
-        ++c;
-      } else {
-        field += ch;
-      }
-    }
-    out += '\n';
-  }
   return out;
 }
 
@@ -233,7 +203,7 @@ TEST(RunIsolation, IsolatedAndInProcessRunsWriteTheSameResults) {
   for (const RunResult& r : here.results) EXPECT_TRUE(r.run_cpu_s.empty()) << r.id;
   const std::string a = read_text(dir.path("here/results.csv"));
   const std::string b = read_text(dir.path("child/results.csv"));
-  EXPECT_EQ(comparable(suite, a), comparable(suite, b));
+  EXPECT_EQ(without_timing(suite, a), without_timing(suite, b));
   // The same traces, byte for byte apart from solve_us (FORMATS.md: column 15).
   auto without_solve_us = [](const std::string& trace) {
     std::istringstream in(trace);

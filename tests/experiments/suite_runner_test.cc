@@ -11,12 +11,15 @@
 #include <sstream>
 
 #include "experiments/report.h"
+#include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 
 namespace sightline::experiments {
 namespace {
 
 using testing::ScratchDir;
+using testing::read_text;
+using testing::without_timing;
 namespace fs = std::filesystem;
 
 // 2 scenes x 2 camera solvers, plus 2 toy problems x 2 solvers: 8 runs.
@@ -31,40 +34,6 @@ problems:
   instances: [{nqueens: [6, 8]}]
   solvers: [sls, bnb]
 )";
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// results.csv with the timing and provenance columns blanked: they describe the machine and
-// the invocation, not the run.
-std::string without_timing(const Suite& suite, const std::string& csv) {
-  const std::vector<std::string> columns = result_columns(suite);
-  std::istringstream in(csv);
-  std::string line, out;
-  while (std::getline(in, line)) {
-    std::string field;
-    std::size_t c = 0;
-    bool quoted = false;
-    for (char ch : line + ",") {
-      if (ch == '"') quoted = !quoted;
-      if (ch == ',' && !quoted) {
-        const bool blank = c < columns.size() &&
-                           (is_timing_column(columns[c]) || is_provenance_column(columns[c]));
-        out += (blank ? "<t>" : field) + ",";
-        field.clear();
-        ++c;
-      } else {
-        field += ch;
-      }
-    }
-    out += '\n';
-  }
-  return out;
-}
 
 RunnerOptions options_for(const std::string& out, std::size_t max_new_runs = 0) {
   RunnerOptions o;

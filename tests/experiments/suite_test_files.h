@@ -1,11 +1,13 @@
 // Small files for the suite tests: a scratch directory with two short scenes (a wall to
-// hide behind, a room with a door) and a helper to write a suite next to them.
+// hide behind, a room with a door), a helper to write a suite next to them, and one to read
+// a file back.
 #pragma once
 
 #include <filesystem>
 #include <unistd.h>
 
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace sightline::experiments::testing {
@@ -56,5 +58,12 @@ trajectory:
  private:
   std::filesystem::path path_;
 };
+
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 }  // namespace sightline::experiments::testing
