@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "experiments/run_order.h"
+#include "experiments/stable_hash.h"
 
 #ifdef SIGHTLINE_HAVE_MPI
 // The C API only: Open MPI's and MPICH's headers would otherwise pull in the C++ bindings.
@@ -122,14 +123,9 @@ class MpiSession {
 // FNV-1a over the run ids in order: ids carry a hash of each run's whole definition (scene
 // file content included), so equal hashes mean the ranks agree on what run i is.
 std::uint64_t ids_hash(const std::vector<SuiteRun>& runs) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const SuiteRun& run : runs) {
-    for (const char c : run.id + '\n') {
-      h ^= static_cast<unsigned char>(c);
-      h *= 1099511628211ull;
-    }
-  }
-  return h;
+  StableHash h;
+  for (const SuiteRun& run : runs) h.add(run.id).add("\n");
+  return h.value();
 }
 
 std::string clock_text(double seconds) {

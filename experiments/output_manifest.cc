@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "experiments/stable_hash.h"
 #include "experiments/suite_runner.h"
 
 namespace sightline::experiments {
@@ -53,16 +54,9 @@ bool holds_other_files(const fs::path& out) {
 }  // namespace
 
 std::string suite_definition_hash(const std::vector<SuiteRun>& runs) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (const SuiteRun& run : runs) {
-    for (unsigned char c : run.definition + "\n") {
-      h ^= c;
-      h *= 1099511628211ULL;
-    }
-  }
-  char buffer[17];
-  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(h));
-  return buffer;
+  StableHash h;
+  for (const SuiteRun& run : runs) h.add(run.definition).add("\n");
+  return h.hex();
 }
 
 void claim_output_folder(const Suite& suite, const std::vector<SuiteRun>& runs,

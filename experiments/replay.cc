@@ -13,6 +13,7 @@
 
 #include "experiments/html_text.h"
 #include "experiments/replay_sources.h"
+#include "experiments/stable_hash.h"
 
 namespace sightline::experiments {
 namespace {
@@ -200,16 +201,10 @@ std::string run_json(const ReplayRun& run, int shared_track, const Grid& grid) {
 // A level's triangles: written once per page however many scenes stand on it (the levels
 // suite has five walks per map), under a key that is a hash of the mesh itself.
 std::string level_key(const camera::TriangleMesh& mesh) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
-  auto mix = [&h](const void* data, std::size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
-  };
-  mix(mesh.vertices.data(), mesh.vertices.size() * sizeof(Eigen::Vector3f));
-  mix(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
-  char key[24];
-  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
-  return key;
+  return StableHash()
+      .add(mesh.vertices.data(), mesh.vertices.size() * sizeof(Eigen::Vector3f))
+      .add(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]))
+      .hex();
 }
 
 std::string level_json(const camera::TriangleMesh& mesh) {

@@ -166,8 +166,11 @@ problems:
   EXPECT_NE(runs["6-queens sls"].note.find("CPU time limit of 1 s"), std::string::npos)
       << runs["6-queens sls"].note;
   EXPECT_EQ(runs["6-queens bnb"].status, "ok");
-  // What the kernel counted: the spinning run used its second of CPU, the other little.
-  EXPECT_GE(std::stod(runs["6-queens sls"].run_cpu_s), 0.99);
+  // What the kernel counted: the spinning run used about its second of CPU, the other
+  // little. Not >= 1: the kernel checks RLIMIT_CPU on its own sampled clock, and on a
+  // contended machine wait4's rusage for the same child has read 0.88-0.96 s (5 of 6 runs
+  // with 5 builds beside it; 1.0x s when idle).
+  EXPECT_GE(std::stod(runs["6-queens sls"].run_cpu_s), 0.7);
   EXPECT_LT(std::stod(runs["6-queens bnb"].run_cpu_s), 0.9);
   EXPECT_GT(std::stod(runs["6-queens bnb"].run_max_rss_mb), 1);
   EXPECT_GT(std::stod(runs["6-queens bnb"].run_wall_s), 0);
