@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "domains/camera/geometry/aabb.h"
+#include "domains/camera/nearby_boxes.h"
 #include "domains/camera/scene.h"
 
 namespace sightline::camera {
@@ -47,9 +48,17 @@ class SceneAtTime {
   const std::vector<Aabb>& mover_boxes() const { return boxes_; }
   bool has_movers() const { return !boxes_.empty(); }
 
+  // The static boxes near the camera (nearby_boxes.h), for sight lines inside their region;
+  // null (the default) = always the scene's BoxTree. Must outlive this object; the answers
+  // are the same either way.
+  void set_nearby(const NearbyBoxes* nearby) { nearby_ = nearby; }
+
   // --- Scene's queries, with the movers at time() (see scene.h for their meaning) ---
   bool line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-    return scene_->line_of_sight(a, b) && !mover_blocks(a, b);
+    const bool boxes_block = nearby_ && nearby_->covers(a, b)
+                                 ? nearby_->segment_blocked(a, b)
+                                 : scene_->solid_tree().segment_blocked(a, b);
+    return !boxes_block && !scene_->triangle_index().segment_blocked(a, b) && !mover_blocks(a, b);
   }
   // A mover hit has source kMover and the mover's index.
   std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
@@ -68,6 +77,7 @@ class SceneAtTime {
   void regroup();
 
   const Scene* scene_;
+  const NearbyBoxes* nearby_ = nullptr;
   double time_ = 0;
   std::vector<Aabb> boxes_;
   std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
