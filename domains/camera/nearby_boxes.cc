@@ -1,5 +1,6 @@
 #include "domains/camera/nearby_boxes.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "domains/camera/geometry/segment_box.h"
@@ -60,6 +61,21 @@ bool NearbyBoxes::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3
     if (clip_segment_to_box(a, delta, e.box, 1.0, clip)) return true;
   }
   return false;
+}
+
+double NearbyBoxes::clearance(const Eigen::Vector3d& p, double limit) const {
+  double d = limit;
+  for (const Entry& e : boxes_) {
+    // A box farther than `limit` along one axis from its padded bounds is farther than limit
+    // (by at least the padding, far beyond rounding): it cannot lower d.
+    if (e.padded.min.x() - p.x() >= limit || p.x() - e.padded.max.x() >= limit ||
+        e.padded.min.y() - p.y() >= limit || p.y() - e.padded.max.y() >= limit ||
+        e.padded.min.z() - p.z() >= limit || p.z() - e.padded.max.z() >= limit) {
+      continue;
+    }
+    d = std::min(d, e.box.signed_distance(p));
+  }
+  return d;
 }
 
 }  // namespace sightline::camera

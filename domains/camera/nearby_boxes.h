@@ -11,7 +11,8 @@
 // exactly BoxTree::segment_blocked's, computed by the same exact slab test on the same boxes.
 // Each box is first rejected against the segment's bounding box, with the box padded by
 // kPad x (1 + |coordinate|) so that no rounding of the exact test can ever find a hit the
-// reject skipped. Segments with an end outside region() go to the tree as before.
+// reject skipped. Segments with an end outside region() go to the tree as before. Likewise
+// the clearance of a point whose ball of the clearance radius lies in region().
 //
 // Capacity is fixed (kCapacity boxes, reserved once): cover() never allocates. When more
 // boxes touch the region it retries without the margin, and past that covers nothing, so
@@ -50,6 +51,15 @@ class NearbyBoxes {
   }
   // scene.solid_tree().segment_blocked(a, b), for a segment covers() accepts.
   bool segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  // True when the ball of radius `limit` (finite, >= 0) around p lies in region().
+  bool covers_ball(const Eigen::Vector3d& p, double limit) const {
+    const Eigen::Vector3d r(limit, limit, limit);
+    return region_.contains(p - r) && region_.contains(p + r);
+  }
+  // The boxes' part of Scene::clearance(p, limit): the smallest signed distance from p to a
+  // box, or `limit` when none is nearer, for a ball covers_ball() accepts (any box nearer
+  // than `limit` meets the ball, so it is in the list).
+  double clearance(const Eigen::Vector3d& p, double limit) const;
 
  private:
   struct Entry {

@@ -2,10 +2,11 @@
 // snapped to a 0.5 m grid, so shared faces and exactly grazing sight lines are common),
 // every segment NearbyBoxes covers is blocked exactly when a brute-force loop over all the
 // scene's boxes says so, and a SceneAtTime with the list answers every sight line (inside
-// the region or not, movers included) as one without it.
+// the region or not, movers included) and every clearance as one without it.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -120,25 +121,29 @@ TEST(NearbyBoxes, KeepsItsListWhileTheRegionFitsAndCoversNothingWhenTooManyBoxes
   EXPECT_EQ(nearby.region().max, first.max);
 }
 
-TEST(SceneAtTime, AnswersEverySightLineTheSameWithTheNearbyBoxes) {
+TEST(SceneAtTime, AnswersEverySightLineAndClearanceTheSameWithTheNearbyBoxes) {
   for (bool snap : {false, true}) {
     std::mt19937_64 rng(41 + snap);
-    const Scene scene = random_scene(rng, 150, snap, 12);
+    const Scene scene = random_scene(rng, 150, snap, 40);
     SceneAtTime plain(scene), with(scene);
     NearbyBoxes nearby(scene);
     with.set_nearby(&nearby);
-    std::uniform_real_distribution<double> pos(-2, 42), time(0, 10), extent(1, 6);
-    int inside = 0, outside = 0, blocked = 0;
-    for (int r = 0; r < 100; ++r) {
+    std::uniform_real_distribution<double> pos(-2, 42), time(0, 10), extent(1, 6), u(0, 1);
+    int inside = 0, outside = 0, blocked = 0, near_wall = 0;
+    for (int r = 0; r < 150; ++r) {
       const double t = time(rng);
-      plain.set_time(t);
-      with.set_time(t);
       const Vector3d c(pos(rng), pos(rng), pos(rng));
       const Vector3d h(extent(rng), extent(rng), extent(rng));
-      nearby.cover({c - h, c + h});
+      // Covered before set_time (the movers near the region are listed) or after it (their
+      // list is of the region before: segments outside it take the grouped path).
+      const bool cover_first = r % 3 != 0;
+      if (cover_first) nearby.cover({c - h, c + h});
+      plain.set_time(t);
+      with.set_time(t);
+      if (!cover_first) nearby.cover({c - h, c + h});
       for (int s = 0; s < 100; ++s) {
         Vector3d a, b;
-        if (s % 2 == 0 && !covers_nothing(nearby)) {
+        if (s % 4 != 0 && !covers_nothing(nearby)) {
           a = point_in(rng, nearby.region(), snap);
           b = point_in(rng, nearby.region(), snap);
         } else {
@@ -148,12 +153,19 @@ TEST(SceneAtTime, AnswersEverySightLineTheSameWithTheNearbyBoxes) {
         (nearby.covers(a, b) ? inside : outside) += 1;
         const bool want = plain.line_of_sight(a, b);
         ASSERT_EQ(with.line_of_sight(a, b), want) << "region " << r << " segment " << s;
+        ASSERT_EQ(with.mover_blocks(a, b), plain.mover_blocks(a, b)) << "region " << r;
         blocked += !want;
+        for (double limit : {0.0, 0.2, 1.0, 3.0, std::numeric_limits<double>::infinity()}) {
+          const double d = plain.clearance(a, limit);
+          ASSERT_EQ(with.clearance(a, limit), d) << "region " << r << " point " << s;
+          near_wall += d < limit;
+        }
       }
     }
-    EXPECT_GT(inside, 1000);
+    EXPECT_GT(inside, 5000);
     EXPECT_GT(outside, 1000);
-    EXPECT_GT(blocked, 500);
+    EXPECT_GT(blocked, 1000);
+    EXPECT_GT(near_wall, 1000);
   }
 }
 
