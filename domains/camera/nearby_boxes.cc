@@ -49,7 +49,7 @@ bool NearbyBoxes::gather(const Aabb& region) {
   return fits;
 }
 
-bool NearbyBoxes::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+bool NearbyBoxes::list_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
   const Eigen::Vector3d lo = a.cwiseMin(b), hi = a.cwiseMax(b);
   const Eigen::Vector3d delta = b - a;
   SegmentClip clip;

@@ -50,7 +50,9 @@ class NearbyBoxes {
     return region_.contains(a) && region_.contains(b);
   }
   // scene.solid_tree().segment_blocked(a, b), for a segment covers() accepts.
-  bool segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  bool segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    return !boxes_.empty() && list_blocks(a, b);
+  }
   // True when the ball of radius `limit` (finite, >= 0) around p lies in region().
   bool covers_ball(const Eigen::Vector3d& p, double limit) const {
     const Eigen::Vector3d r(limit, limit, limit);
@@ -66,6 +68,7 @@ class NearbyBoxes {
     Aabb box;     // exact, as in the scene
     Aabb padded;  // for the reject test
   };
+  bool list_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   // Gathers the boxes touching `region` grown by `margin`; false if more than kCapacity.
   bool gather(const Aabb& region);
 

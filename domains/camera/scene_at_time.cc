@@ -78,6 +78,7 @@ void SceneAtTime::set_time_extrapolated(double now, double ahead) {
 }
 
 bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  if (boxes_.empty()) return false;
   if (near_region_.contains(a) && near_region_.contains(b)) {
     for (std::uint32_t i : near_movers_) {
       if (segment_hits_box(a, b, boxes_[i])) return true;

@@ -54,8 +54,10 @@ class SceneAtTime {
   // The static boxes near the camera (nearby_boxes.h), for sight lines inside their region;
   // null (the default) = always the scene's BoxTree. Must outlive this object; the answers
   // are the same either way.
+  // Ignored in a scene without static boxes (a level: its triangles have their own index),
+  // where the list could only cost a test per query.
   void set_nearby(const NearbyBoxes* nearby) {
-    nearby_ = nearby;
+    nearby_ = scene_->solids().empty() ? nullptr : nearby;
     find_near_movers();
   }
 

@@ -50,30 +50,19 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
     out.valid = true;
     return out;
   }
-  // The sight-line tests, in two rounds that decide exactly what one loop over
-  // expensive() in order would (a candidate is dropped by the first failure, whichever
-  // comes first, and a survivor's cost is the same sum in the same order), but cheapest to
-  // fail first. Ali: a candidate counts only if the look-at point is visible from it
-  // (whether the profile makes that constraint hard or soft), and only if it breaks no hard
-  // constraint.
+  // The sight-line tests, cheapest first (the view's order). Ali: a candidate counts only if
+  // the look-at point is visible from it (whether the profile makes that constraint hard or
+  // soft), and only if it breaks no hard constraint. The soft counts stop as soon as the
+  // candidate has lost (BoundedViolation): the same candidates survive, with the same sums.
   const std::vector<csp::ConstraintId>& expensive = view_->expensive();
-  const csp::ConstraintId look_at = view_->look_at_id();
-  //   1. The look-at sight line (one ray) and the other hard ones (clearance: one nearest
-  //      query), before any soft count of 5 to 9 rays is paid for a candidate that fails.
-  if (problem_->constraint(look_at).violation(x) > 0) return out;
-  for (csp::ConstraintId id : expensive) {
-    const csp::Constraint& c = problem_->constraint(id);
-    if (id != look_at && c.is_hard() && c.violation(x) > 0) return out;
-  }
-  //   2. The soft ones in the view's order, each stopping as soon as the candidate has lost
-  //      (BoundedViolation; a soft look-at term adds weight x 0 here and is skipped).
   for (std::size_t i = 0; i < expensive.size(); ++i) {
     const csp::ConstraintId id = expensive[i];
     const csp::Constraint& c = problem_->constraint(id);
-    if (id == look_at || c.is_hard()) continue;
     const BoundedViolation* bounded = view_->expensive_bounded()[i];
-    const double violation = bounded ? bounded->violation_until(x, out.cost, bound)
-                                     : c.violation(x);
+    const double violation = bounded && !c.is_hard() ? bounded->violation_until(x, out.cost, bound)
+                                                     : c.violation(x);
+    if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
+    if (c.is_hard()) continue;
     out.cost += c.weight() * violation;
     if (out.cost >= bound) return out;
   }

@@ -1,9 +1,9 @@
 // How the octree solvers score a candidate cheaply without scoring it differently:
 //   - BoundedViolation (body visibility, future visibility): violation_until returns exactly
 //     violation() unless the candidate has lost, and then a lower bound that proves it lost;
-//   - OctreeSearch::evaluate (hard verdicts first, soft counts stopped early) decides valid
-//     and cost exactly as the plain loop over the view's constraints in order, written here,
-//     does: the same candidates survive, with bit-identical costs.
+//   - OctreeSearch::evaluate (soft sight-line counts stopped early) decides valid and cost
+//     exactly as the plain loop over the view's constraints in order, written here, does:
+//     the same candidates survive, with bit-identical costs.
 // On a shipped scene with movers crossing the sight line (people-crossing), with the
 // anticipating profile and variants with a soft look-at and a soft clearance.
 #include <gtest/gtest.h>
