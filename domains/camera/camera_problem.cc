@@ -15,6 +15,7 @@ namespace sightline::camera {
 CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
     : scene_(&scene),
       profile_(&profile),
+      nearby_(std::make_unique<NearbyBoxes>(scene)),
       at_time_(std::make_unique<SceneAtTime>(scene)),
       prediction_(std::make_unique<MotionPrediction>(scene, profile.anticipation)),
       problem_(std::make_unique<csp::Problem>("camera: " + scene.name())),
@@ -22,6 +23,8 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
   if (const std::string error = profile.validate(); !error.empty()) {
     throw std::invalid_argument("camera profile '" + profile.name + "': " + error);
   }
+  at_time_->set_nearby(nearby_.get());
+  prediction_->set_nearby(nearby_.get());
   csp::Problem& p = *problem_;
   // The scene's camera start, or this profile's ideal spot at the first keyframe.
   const CharacterState first = scene.character_at(scene.trajectory().start_time());
@@ -139,6 +142,14 @@ void CameraProblem::set_search_box(const Eigen::Vector3d& centre, double half_si
     problem_->set_domain(v, csp::Domain::real_interval(centre[v] - half_size,
                                                        centre[v] + half_size));
   }
+  // Every sight line of the frame runs from the search box to the body, the look-at point
+  // or a predicted look-at point: the boxes near all of them answer it (nearby_boxes.h).
+  const Eigen::Vector3d half(half_size, half_size, half_size);
+  Aabb needed{centre - half, centre + half};
+  needed.merge(scene_->character().body_at(character_.position));
+  needed.merge(scene_->character().look_at(character_.position));
+  for (int k = 0; k < prediction_->size(); ++k) needed.merge(prediction_->sample(k).look_at);
+  nearby_->cover(needed);
 }
 
 Eigen::Vector3d CameraProblem::ideal_position() const {

@@ -34,6 +34,7 @@
 #include "domains/camera/area_profile_switch.h"
 #include "domains/camera/constraints/frame_parameters.h"
 #include "domains/camera/motion_prediction.h"
+#include "domains/camera/nearby_boxes.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/scene.h"
 #include "domains/camera/scene_at_time.h"
@@ -93,6 +94,9 @@ class CameraProblem {
   const Scene* scene_;
   const CameraProfile* profile_;
   // Owned through a pointer so the constraints' references survive a move of the problem.
+  // The static boxes around the search box and the character (and its predicted look-at
+  // points), shared by at_time_ and the prediction's geometries; set_search_box covers them.
+  std::unique_ptr<NearbyBoxes> nearby_;
   std::unique_ptr<SceneAtTime> at_time_;
   std::unique_ptr<MotionPrediction> prediction_;
   std::unique_ptr<csp::Problem> problem_;

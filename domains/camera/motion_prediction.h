@@ -60,6 +60,11 @@ class MotionPrediction {
 
   // Predicts from the character's state at character.t.
   void update(const CharacterState& character);
+  // Every sample's geometry answers its static boxes from `nearby` where it covers a sight
+  // line (SceneAtTime::set_nearby; the answers are the same).
+  void set_nearby(const NearbyBoxes* nearby) {
+    for (auto& g : geometry_) g->set_nearby(nearby);
+  }
 
   // Number of samples: 0 for lookahead none, else settings.samples.
   int size() const { return size_; }

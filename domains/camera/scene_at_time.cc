@@ -1,6 +1,7 @@
 #include "domains/camera/scene_at_time.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "domains/camera/constraints/clearance.h"
 #include "domains/camera/geometry/segment_box.h"
@@ -13,6 +14,7 @@ SceneAtTime::SceneAtTime(const Scene& scene)
       segments_(scene.movers().size(), 0),
       order_(scene.movers().size()),
       group_bounds_((scene.movers().size() + kGroupSize - 1) / kGroupSize) {
+  near_movers_.reserve(scene.movers().size());
   set_time(scene.trajectory().start_time());
 }
 
@@ -25,7 +27,27 @@ void SceneAtTime::set_time(double t) {
   regroup();
 }
 
+void SceneAtTime::find_near_movers() {
+  near_movers_.clear();
+  near_region_ = Aabb::empty();
+  if (!nearby_) return;
+  const Aabb& region = nearby_->region();
+  if (!region.contains(region.min)) return;  // covers nothing
+  // Movers touching the region grown by 1 mm: one that close to a segment inside the region
+  // is listed too, so the exact test's rounding cannot matter.
+  const Eigen::Vector3d slack(1e-3, 1e-3, 1e-3);
+  const Aabb grown{region.min - slack, region.max + slack};
+  for (std::size_t i = 0; i < boxes_.size(); ++i) {
+    const Aabb& b = boxes_[i];
+    if ((b.min.array() <= grown.max.array()).all() && (grown.min.array() <= b.max.array()).all()) {
+      near_movers_.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  near_region_ = region;
+}
+
 void SceneAtTime::regroup() {
+  find_near_movers();
   bounds_ = Aabb::empty();
   for (const Aabb& box : boxes_) bounds_.merge(box);
   if (boxes_.empty()) return;
@@ -56,6 +78,13 @@ void SceneAtTime::set_time_extrapolated(double now, double ahead) {
 }
 
 bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  if (boxes_.empty()) return false;
+  if (near_region_.contains(a) && near_region_.contains(b)) {
+    for (std::uint32_t i : near_movers_) {
+      if (segment_hits_box(a, b, boxes_[i])) return true;
+    }
+    return false;
+  }
   if (boxes_.empty() || !segment_hits_box(a, b, bounds_)) return false;
   for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
     if (!segment_hits_box(a, b, group_bounds_[g])) continue;
@@ -98,7 +127,23 @@ std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
 }
 
 double SceneAtTime::clearance(const Eigen::Vector3d& p, double limit) const {
-  double d = scene_->clearance(p, limit);
+  // A ball inside the nearby region meets only the listed boxes (a box scene: the level's
+  // triangles have their own index) and the listed movers.
+  if (nearby_ && std::isfinite(limit) && limit >= 0 && scene_->triangle_index().empty() &&
+      nearby_->covers_ball(p, limit)) {
+    double d = nearby_->clearance(p, limit);
+    const Eigen::Vector3d r(limit, limit, limit);
+    if (near_region_.contains(p - r) && near_region_.contains(p + r)) {
+      for (std::uint32_t i : near_movers_) d = std::min(d, boxes_[i].signed_distance(p));
+      return std::min(d, limit);
+    }
+    return grouped_mover_clearance(p, d, limit);
+  }
+  return grouped_mover_clearance(p, scene_->clearance(p, limit), limit);
+}
+
+double SceneAtTime::grouped_mover_clearance(const Eigen::Vector3d& p, double d,
+                                            double limit) const {
   for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
     // Outside a group's bounds, its members are at least as far as the bounds.
     if (group_bounds_[g].signed_distance(p) >= d) continue;

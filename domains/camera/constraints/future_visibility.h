@@ -13,18 +13,19 @@
 // where the character is going is one the camera can hold through the turn, which is what
 // moving early means. Soft (a prediction is a guess; it must never make a frame infeasible),
 // and like the look-at constraint a step function: its gradient is 0 almost everywhere,
-// reported as exact so no solver estimates noise at the steps. K sight lines per candidate,
-// no allocation. With lookahead none the prediction is empty and the violation is 0.
+// reported as exact so no solver estimates noise at the steps. K sight lines per candidate
+// (fewer through violation_until when a search only needs to know it lost), no allocation. With lookahead none the prediction is empty and the violation is 0.
 // Scope (cam_x, cam_y, cam_z). The prediction must outlive the constraint; its owner
 // (CameraProblem) updates it each frame.
 #pragma once
 
 #include "csp/constraint.h"
+#include "domains/camera/constraints/bounded_violation.h"
 #include "domains/camera/motion_prediction.h"
 
 namespace sightline::camera {
 
-class FutureVisibleConstraint : public csp::Constraint {
+class FutureVisibleConstraint : public csp::Constraint, public BoundedViolation {
  public:
   FutureVisibleConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
                           const MotionPrediction& prediction, double weight)
@@ -35,8 +36,15 @@ class FutureVisibleConstraint : public csp::Constraint {
   double violation_and_gradient(std::span<const double> values,
                                 std::span<double> gradient) const override;
   bool has_exact_gradient() const override { return true; }
+  // Stops once the hidden samples' weight is enough (bounded_violation.h).
+  double violation_until(std::span<const double> values, double cost_before,
+                         double bound) const override;
 
  private:
+  // The loop of both: stops early only when `bounded`.
+  double hidden_fraction(std::span<const double> values, bool bounded, double cost_before,
+                         double bound) const;
+
   const MotionPrediction* prediction_;
 };
 

@@ -38,6 +38,22 @@ double BodyVisibilityConstraint::violation(std::span<const double> values) const
   return 1.0 - visible_fraction(*scene_, camera, scene_->scene().character().body_at(feet));
 }
 
+double BodyVisibilityConstraint::violation_until(std::span<const double> values,
+                                                 double cost_before, double bound) const {
+  const Eigen::Vector3d camera(values[scope()[0]], values[scope()[1]], values[scope()[2]]);
+  const Eigen::Vector3d feet(frame_.char_x.value(), frame_.char_y.value(), frame_.char_z.value());
+  // violation() is 1 - visible / kBodySamples; with the samples not yet tested counted as
+  // visible, the same expression is a lower bound of it (rounding is monotone).
+  int hidden = 0;
+  for (const Eigen::Vector3d& p : body_sample_points(scene_->scene().character().body_at(feet))) {
+    if (scene_->line_of_sight(camera, p)) continue;
+    ++hidden;
+    const double at_least = 1.0 - static_cast<double>(kBodySamples - hidden) / kBodySamples;
+    if (cost_before + weight() * at_least >= bound) return at_least;
+  }
+  return 1.0 - static_cast<double>(kBodySamples - hidden) / kBodySamples;
+}
+
 double BodyVisibilityConstraint::violation_and_gradient(std::span<const double> values,
                                                         std::span<double> gradient) const {
   std::fill(gradient.begin(), gradient.end(), 0.0);

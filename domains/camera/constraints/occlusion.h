@@ -26,6 +26,7 @@
 #include <array>
 
 #include "csp/constraint.h"
+#include "domains/camera/constraints/bounded_violation.h"
 #include "domains/camera/constraints/frame_parameters.h"
 #include "domains/camera/scene.h"
 #include "domains/camera/scene_at_time.h"
@@ -74,7 +75,8 @@ class LookAtVisibleConstraint : public csp::Constraint {
 };
 
 // Violation 1 - visible fraction of the character's body. Scope (cam_x, cam_y, cam_z).
-class BodyVisibilityConstraint : public csp::Constraint {
+// violation_until stops counting once enough samples are hidden (bounded_violation.h).
+class BodyVisibilityConstraint : public csp::Constraint, public BoundedViolation {
  public:
   BodyVisibilityConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
                            const SceneAtTime& scene, const FrameParameters& frame, double weight)
@@ -84,6 +86,8 @@ class BodyVisibilityConstraint : public csp::Constraint {
   double violation_and_gradient(std::span<const double> values,
                                 std::span<double> gradient) const override;
   bool has_exact_gradient() const override { return true; }
+  double violation_until(std::span<const double> values, double cost_before,
+                         double bound) const override;
 
  private:
   const SceneAtTime* scene_;

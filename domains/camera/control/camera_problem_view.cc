@@ -41,6 +41,10 @@ std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& pro
     if (why) *why = "needs a camera problem (cam_x, cam_y, cam_z with the camera constraints)";
     return std::nullopt;
   }
+  for (csp::ConstraintId id : view.expensive_) {
+    view.expensive_bounded_.push_back(
+        dynamic_cast<const BoundedViolation*>(&problem.constraint(id)));
+  }
   view.look_x_ = *look;
   view.char_x_ = *ch;
   view.char_yaw_ = *yaw;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "csp/problem.h"
+#include "domains/camera/constraints/bounded_violation.h"
 #include "domains/camera/constraints/occlusion.h"
 #include "domains/camera/constraints/smooth_constraints.h"
 #include "domains/camera/scene.h"
@@ -36,6 +37,10 @@ class CameraProblemView {
   // visibility tests (several BVH queries each) come last so a search can stop early.
   const std::vector<csp::ConstraintId>& cheap() const { return cheap_; }
   const std::vector<csp::ConstraintId>& expensive() const { return expensive_; }
+  // For each of expensive(): its BoundedViolation interface, or null (bounded_violation.h).
+  const std::vector<const BoundedViolation*>& expensive_bounded() const {
+    return expensive_bounded_;
+  }
 
   // Frame parameters, read live.
   Eigen::Vector3d look_at(const csp::Problem& problem) const;
@@ -48,6 +53,7 @@ class CameraProblemView {
   const HeightConstraint* height_ = nullptr;
   csp::ConstraintId orientation_id_ = 0, height_id_ = 0, look_at_id_ = 0;
   std::vector<csp::ConstraintId> cheap_, expensive_;
+  std::vector<const BoundedViolation*> expensive_bounded_;
   std::size_t look_x_ = 0, char_x_ = 0, char_yaw_ = 0;
 };
 

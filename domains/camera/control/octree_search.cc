@@ -50,11 +50,17 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
     out.valid = true;
     return out;
   }
-  for (csp::ConstraintId id : view_->expensive()) {
+  // The sight-line tests, cheapest first (the view's order). Ali: a candidate counts only if
+  // the look-at point is visible from it (whether the profile makes that constraint hard or
+  // soft), and only if it breaks no hard constraint. The soft counts stop as soon as the
+  // candidate has lost (BoundedViolation): the same candidates survive, with the same sums.
+  const std::vector<csp::ConstraintId>& expensive = view_->expensive();
+  for (std::size_t i = 0; i < expensive.size(); ++i) {
+    const csp::ConstraintId id = expensive[i];
     const csp::Constraint& c = problem_->constraint(id);
-    const double violation = c.violation(x);
-    // Ali: a candidate counts only if the look-at point is visible from it (whether the
-    // profile makes that constraint hard or soft), and only if it breaks no hard constraint.
+    const BoundedViolation* bounded = view_->expensive_bounded()[i];
+    const double violation = bounded && !c.is_hard() ? bounded->violation_until(x, out.cost, bound)
+                                                     : c.violation(x);
     if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
     if (c.is_hard()) continue;
     out.cost += c.weight() * violation;

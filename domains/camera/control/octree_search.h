@@ -12,7 +12,11 @@
 //     from the node"); otherwise hard constraints are ignored (Bourne: occlusion is only
 //     handled nominally).
 // Scoring evaluates the cheap constraints first and stops as soon as a candidate cannot beat
-// the best one, so the sight-line queries run only for candidates that matter.
+// the best one, so the sight-line queries run only for candidates that matter; the body and
+// future visibility counts stop mid-way too (BoundedViolation). Testing clearance (hard)
+// before them was measured and dropped: it cost more instructions than it saved, on the city
+// with movers (1.4%) and on a level walk (0.5%), where clearance asks Embree and the level's
+// solid volume.
 // No allocation per candidate.
 #pragma once
 

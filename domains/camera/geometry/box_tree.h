@@ -70,6 +70,11 @@ class BoxTree {
   // Calls visit(BoxIndex) for every box whose closed volume contains `p`, in no set order.
   template <class Visit>
   void for_each_containing(const Eigen::Vector3d& p, Visit&& visit) const;
+  // Calls visit(BoxIndex) for every box whose closed volume meets the closed `query`
+  // (touching counts), in no set order. For gathering the boxes near the camera
+  // (nearby_boxes.h).
+  template <class Visit>
+  void for_each_touching(const Aabb& query, Visit&& visit) const;
   // The smallest-index box whose interior overlaps the interior of `query` (touching is not
   // overlapping).
   std::optional<BoxIndex> any_overlapping(const Aabb& query) const;
@@ -140,6 +145,31 @@ void BoxTree::for_each_containing(const Eigen::Vector3d& p, Visit&& visit) const
     }
     for (std::uint32_t child = n.first; child < n.first + 2; ++child) {
       if (node(child).bounds().contains(p)) stack[top++] = child;
+    }
+  }
+}
+
+template <class Visit>
+void BoxTree::for_each_touching(const Aabb& query, Visit&& visit) const {
+  auto touches = [&](const Aabb& b) {
+    return b.min.x() <= query.max.x() && query.min.x() <= b.max.x() &&
+           b.min.y() <= query.max.y() && query.min.y() <= b.max.y() &&
+           b.min.z() <= query.max.z() && query.min.z() <= b.max.z();
+  };
+  if (pairs_.empty() || !touches(node(0).bounds())) return;
+  std::uint32_t stack[kStackSize];
+  int top = 0;
+  stack[top++] = 0;  // nodes on the stack have passed their own test
+  while (top > 0) {
+    const Node& n = node(stack[--top]);
+    if (n.count > 0) {
+      for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+        if (touches(leaf_boxes_[i])) visit(leaf_index_[i]);
+      }
+      continue;
+    }
+    for (std::uint32_t child = n.first; child < n.first + 2; ++child) {
+      if (touches(node(child).bounds())) stack[top++] = child;
     }
   }
 }

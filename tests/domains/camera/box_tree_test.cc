@@ -1,5 +1,6 @@
 // The BVH answers exactly as brute force does, on random scenes: sight lines, first hits
-// (parameter and box, ties to the smaller index), nearest boxes, containment and overlap.
+// (parameter and box, ties to the smaller index), nearest boxes, containment, overlap and
+// touching.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -118,6 +119,19 @@ TEST_P(BoxTreeAgainstBruteForce, AnswersEveryQueryExactlyLikeBruteForce) {
       if (scene.boxes[i].overlaps_interior(probe)) expected_overlap = i;
     }
     ASSERT_EQ(tree.any_overlapping(probe), expected_overlap) << "query " << q;
+
+    // Every box touching a random box (closed: shared faces count).
+    std::set<std::uint32_t> expected_touching, got_touching;
+    for (std::uint32_t i = 0; i < scene.boxes.size(); ++i) {
+      const Aabb& c = scene.boxes[i];
+      if ((c.min.array() <= probe.max.array()).all() && (probe.min.array() <= c.max.array()).all()) {
+        expected_touching.insert(i);
+      }
+    }
+    tree.for_each_touching(probe, [&](std::uint32_t i) {
+      ASSERT_TRUE(got_touching.insert(i).second);
+    });
+    ASSERT_EQ(got_touching, expected_touching) << "query " << q;
   }
   if (n >= 50) {
     // The scenes are neither empty nor solid: both answers occur often.
