@@ -102,6 +102,18 @@ class Problem {
     return {incidence_.data() + incidence_start_[id],
             incidence_start_[id + 1] - incidence_start_[id]};
   }
+  // The whole index at once, for code that walks it in hot loops and should not test
+  // whether it is built at every call (IncrementalEvaluator shares it instead of keeping
+  // a copy): variable v's incidences are entries[starts[v] .. starts[v + 1]). Built here if
+  // needed; valid, like incidences(), until a constraint or variable is added.
+  struct IncidenceIndex {
+    const Incidence* entries;
+    const std::size_t* starts;  // num_variables() + 1 of them
+  };
+  IncidenceIndex incidence_index() const {
+    if (!incidence_ready_.load(std::memory_order_acquire)) build_incidences();
+    return {incidence_.data(), incidence_start_.data()};
+  }
 
   Parameters& parameters() { return parameters_; }
   const Parameters& parameters() const { return parameters_; }
