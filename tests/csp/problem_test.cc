@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 
 #include "csp/kinds/abs_deviation.h"
+#include "csp/kinds/all_different.h"
 #include "csp/kinds/linear.h"
 #include "csp/kinds/not_equal.h"
 #include "incremental_check.h"
@@ -288,6 +290,118 @@ TEST(IncrementalEvaluator, ConstantConstraintsStayInTheScoreButLeaveTheDeltas) {
   }
   EXPECT_THROW(IncrementalEvaluator(*p, Assignment{1, 1, 0}, std::vector<ConstraintId>{9}),
                std::invalid_argument);
+}
+
+// The evaluator walks the Problem's shared incidence index and skips the constraints named
+// constant itself (it used to copy per-variable lists of the others). On random problems
+// mixing kinds with and without incremental states, hard and soft, some constraints named
+// constant, everything is checked against per-variable lists of the non-constant
+// constraints built here from the scopes alone: each delta is the weighted change of those
+// constraints only, evaluated in full; evaluations() grows by their number; the running
+// score is theirs plus the constant ones' score at the start (constants are not followed);
+// can_retract holds exactly when all of them are all_differents (the one kind with partial
+// assignments); and a retract / place_delta / place round trip agrees with full evaluation.
+TEST(IncrementalEvaluator, SharedIncidencesSkipConstantConstraintsLikeSeparateLists) {
+  std::mt19937 rng(2026);
+  for (int round = 0; round < 40; ++round) {
+    Problem p("random");
+    const std::size_t n = 4 + rng() % 9;
+    const VariableId first = p.add_variables("x", n, Domain::integer_range(0, 4));
+    auto random_scope = [&](std::size_t size) {
+      std::vector<VariableId> all(n);
+      for (std::size_t i = 0; i < n; ++i) all[i] = first + static_cast<VariableId>(i);
+      std::shuffle(all.begin(), all.end(), rng);
+      all.resize(std::min(size, n));
+      return all;
+    };
+    const std::size_t m = 2 + rng() % 9;
+    std::vector<char> constant(m, 0);
+    std::vector<ConstraintId> constant_ids;
+    std::vector<char> is_all_different(m, 0);
+    for (ConstraintId c = 0; c < m; ++c) {
+      const bool hard = rng() % 2 == 0;
+      const double weight = 1 + static_cast<double>(rng() % 4);
+      switch (rng() % 3) {
+        case 0: {
+          const auto s = random_scope(2);
+          p.add_constraint(std::make_unique<NotEqual>(s[0], s[1], 1, weight, hard));
+          break;
+        }
+        case 1: {
+          const auto s = random_scope(1 + rng() % 4);
+          std::vector<double> coefficients(s.size());
+          for (double& a : coefficients) a = static_cast<double>(rng() % 5) - 2;
+          p.add_constraint(std::make_unique<LinearConstraint>(s, coefficients,
+                                                              Relation::kLessEqual, 3, weight));
+          p.mutable_constraint(c).set_hard(hard);
+          break;
+        }
+        default: {
+          const auto s = random_scope(2 + rng() % 4);
+          std::vector<double> offsets(s.size());
+          for (double& o : offsets) o = static_cast<double>(rng() % 3);
+          const auto range = key_range_from_domains(p, s, offsets);
+          p.add_constraint(std::make_unique<AllDifferent>(
+              s, offsets, AllDifferent::Measure::kVariables, weight, hard, range));
+          is_all_different[c] = 1;
+        }
+      }
+      if (rng() % 3 == 0) {
+        constant[c] = 1;
+        constant_ids.push_back(c);
+      }
+    }
+    // The old layout: per variable, the non-constant constraints and positions, from scopes.
+    std::vector<std::vector<ConstraintId>> lists(n);
+    for (ConstraintId c = 0; c < m; ++c) {
+      if (constant[c]) continue;
+      for (VariableId v : p.constraint(c).scope()) lists[v].push_back(c);
+    }
+    Assignment values(n);
+    for (double& x : values) x = static_cast<double>(rng() % 5);
+    IncrementalEvaluator e(p, values, constant_ids);
+    Score constant_part;
+    for (ConstraintId c : constant_ids) constant_part += p.constraint_score(c, values);
+    for (VariableId v = 0; v < n; ++v) {
+      const bool retractable = std::all_of(lists[v].begin(), lists[v].end(),
+                                           [&](ConstraintId c) { return is_all_different[c]; });
+      EXPECT_EQ(e.can_retract(v), retractable) << "round " << round << ", variable " << v;
+    }
+    auto running = [&](const Assignment& a) {
+      Score sum = constant_part;
+      for (ConstraintId c = 0; c < m; ++c) {
+        if (!constant[c]) sum += p.constraint_score(c, a);
+      }
+      return sum;
+    };
+    auto close = [](const Score& a, const Score& b) {
+      return std::abs(a.hard - b.hard) < 1e-9 && std::abs(a.soft - b.soft) < 1e-9;
+    };
+    for (int step = 0; step < 60; ++step) {
+      const auto v = static_cast<VariableId>(rng() % n);
+      const auto value = static_cast<double>(rng() % 5);
+      Assignment after = e.values();
+      after[v] = value;
+      Score expected;
+      for (ConstraintId c : lists[v]) {
+        expected += p.constraint_score(c, after) - p.constraint_score(c, e.values());
+      }
+      const std::size_t before = e.evaluations();
+      const Score got = e.delta(v, value);
+      ASSERT_TRUE(close(got, expected)) << "round " << round << ", step " << step;
+      EXPECT_EQ(e.evaluations() - before, value == e.values()[v] ? 0 : lists[v].size());
+      if (step % 3 == 2) continue;
+      e.assign(v, value);
+      ASSERT_TRUE(close(e.score(), running(e.values()))) << "round " << round << ", step " << step;
+      if (!e.can_retract(v)) continue;
+      e.retract(v);
+      const Score retracted = e.score();
+      const Score placed = e.place_delta(v, value);
+      e.place(v, value);
+      ASSERT_TRUE(close(e.score(), running(e.values()))) << "round " << round << ", step " << step;
+      EXPECT_TRUE(close(e.score() - retracted, placed)) << "round " << round << ", step " << step;
+    }
+  }
 }
 
 }  // namespace
