@@ -125,24 +125,38 @@ void IncrementalEvaluator::retract(VariableId var) {
 }
 
 void IncrementalEvaluator::retract(std::span<const VariableId> vars) {
-  for (VariableId v : vars) require_retractable(v);
+  // One pass counts, per constraint, the variables retracted (and checks that each can
+  // be, before anything changes); the constraints whose whole scope goes are cleared at
+  // once, and only when some constraint loses part of its scope is a second pass needed.
+  // A permutation group retracted whole (constructive placement) takes the single pass.
   hits_.assign(problem_->num_constraints(), 0);
   for (VariableId v : vars) {
-    for (const Incidence& link : links(v)) ++hits_[link.constraint];  // constant ones unused
+    for (const Incidence& link : links(v)) {
+      const Tracked& t = tracked_[link.constraint];
+      if (t.constant) continue;
+      if (!t.partial) require_retractable(v);  // throws
+      ++hits_[link.constraint];
+    }
   }
   const auto whole = [&](ConstraintId id) {
     return hits_[id] == problem_->constraint(id).scope().size();
   };
-  for (VariableId v : vars) {
-    for (const Incidence& link : links(v)) {
-      if (tracked_[link.constraint].constant || whole(link.constraint)) continue;
-      const double dv = tracked_[link.constraint].state->retract(values_, link.position);
-      violations_[link.constraint] += dv;
-      add(total_, link.constraint, dv);
+  bool some_part = false;
+  for (ConstraintId id = 0; id < hits_.size(); ++id) {
+    if (hits_[id] != 0 && !whole(id)) some_part = true;
+  }
+  if (some_part) {
+    for (VariableId v : vars) {
+      for (const Incidence& link : links(v)) {
+        if (tracked_[link.constraint].constant || whole(link.constraint)) continue;
+        const double dv = tracked_[link.constraint].state->retract(values_, link.position);
+        violations_[link.constraint] += dv;
+        add(total_, link.constraint, dv);
+      }
     }
   }
   for (ConstraintId id = 0; id < hits_.size(); ++id) {
-    if (tracked_[id].constant || !whole(id)) continue;
+    if (hits_[id] == 0 || !whole(id)) continue;
     const double dv = tracked_[id].state->retract_all(values_, hits_[id]);
     violations_[id] += dv;
     add(total_, id, dv);

@@ -124,10 +124,9 @@ void DiscreteSearch::begin_run(csp::Assignment values) {
   ++evaluations_;
   run_best_ = evaluator_->score();
   stall_ = 0;
-  tabu_until_.assign(n_, 0);
-  tabu_value_.assign(n_, 0.0);
+  tabu_.reset(n_);
   list_.clear();
-  listed_.assign(n_, 0);
+  listed_.reset(n_);
   breakout_.reset(problem_.num_constraints());
 }
 

@@ -8,13 +8,13 @@
 namespace sightline::solvers::detail {
 
 bool DiscreteSearch::is_tabu(csp::VariableId v, double value) const {
-  return tabu_until_[v] > iterations_ && tabu_value_[v] == value;
+  const Tabu& t = tabu_[v];
+  return t.until > iterations_ && t.value == value;
 }
 
 void DiscreteSearch::note_change(csp::VariableId v, double old_value) {
   best_.log_change(v, old_value);
-  tabu_value_[v] = old_value;
-  tabu_until_[v] = iterations_ + static_cast<std::uint64_t>(options_.tabu_tenure);
+  tabu_[v] = {iterations_ + static_cast<std::uint64_t>(options_.tabu_tenure), old_value};
 }
 
 void DiscreteSearch::apply(csp::VariableId v, double value) {
