@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace sightline::csp {
@@ -192,6 +193,10 @@ void Problem::build_incidences() const {
   const std::size_t n = num_variables();
   std::size_t total = 0;
   for (const auto& c : constraints_) total += c->scope().size();
+  if (total > UINT32_MAX) {
+    throw std::length_error("problem '" + name_ + "': " + std::to_string(total) +
+                            " variable occurrences in constraint scopes; at most 2^32 - 1");
+  }
   incidence_start_.assign(n + 1, 0);
   for (const auto& c : constraints_) {
     for (VariableId v : c->scope()) ++incidence_start_[v];
