@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -244,6 +246,37 @@ TEST(Problem, CheckAssignmentNamesTheOffendingVariable) {
   }
   EXPECT_THROW(p->check_assignment(Assignment{0, 1}), std::invalid_argument);
   EXPECT_THROW(p->check_assignment(Assignment{0, 1, std::nan("")}), std::invalid_argument);
+}
+
+// check_assignment tests integer ranges inline and asks the Domain otherwise: on every kind,
+// batch or single, it must refuse exactly the values Domain::contains refuses (and NaN), and
+// default_assignment must give each variable its own domain's middle.
+TEST(Problem, CheckAssignmentAgreesWithTheDomainOnEveryKind) {
+  Problem p("kinds");
+  p.add_variables("b", 3, Domain::integer_range(-1, 3));
+  p.add_variable("s", Domain::value_set({0.5, 2, 7}));
+  p.add_variables("c", 2, Domain::integer_range(0, 1));
+  p.add_variable("r", Domain::real_interval(-1, 2.5));
+  p.add_variable("i", Domain::integer_range(2, 4));
+  const Assignment middle = p.default_assignment();
+  for (VariableId v = 0; v < p.num_variables(); ++v) {
+    EXPECT_EQ(middle[v], p.domain(v).middle()) << "variable " << v;
+  }
+  EXPECT_NO_THROW(p.check_assignment(middle));
+  const double probes[] = {-2, -1, -0.5, 0, 0.5, 1, 2, 2.5, 3, 3.5, 4, 7, 1e300,
+                           std::numeric_limits<double>::infinity(), std::nan("")};
+  for (VariableId v = 0; v < p.num_variables(); ++v) {
+    for (double x : probes) {
+      Assignment a = middle;
+      a[v] = x;
+      const bool valid = !std::isnan(x) && p.domain(v).contains(x);
+      if (valid) {
+        EXPECT_NO_THROW(p.check_assignment(a)) << "variable " << v << " = " << x;
+      } else {
+        EXPECT_THROW(p.check_assignment(a), std::invalid_argument) << "variable " << v << " = " << x;
+      }
+    }
+  }
 }
 
 TEST(Problem, DefaultAssignmentTakesEachDomainsMiddle) {
