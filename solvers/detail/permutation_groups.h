@@ -38,7 +38,8 @@ struct PermutationGroup {
     return pinned.empty() ? variables : std::span<const csp::VariableId>(unpinned_variables);
   }
   std::span<const double> free_values() const {
-    return pinned.empty() ? std::span<const double>(values) : std::span<const double>(unpinned_values);
+    return pinned.empty() ? std::span<const double>(values)
+                          : std::span<const double>(unpinned_values);
   }
 
   // Filled only when something is pinned (find_permutation_groups).

@@ -273,7 +273,8 @@ TEST(Problem, CheckAssignmentAgreesWithTheDomainOnEveryKind) {
       if (valid) {
         EXPECT_NO_THROW(p.check_assignment(a)) << "variable " << v << " = " << x;
       } else {
-        EXPECT_THROW(p.check_assignment(a), std::invalid_argument) << "variable " << v << " = " << x;
+        EXPECT_THROW(p.check_assignment(a), std::invalid_argument)
+            << "variable " << v << " = " << x;
       }
     }
   }
