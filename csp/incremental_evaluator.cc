@@ -6,7 +6,7 @@ namespace sightline::csp {
 
 IncrementalEvaluator::IncrementalEvaluator(const Problem& problem, Assignment start,
                                            std::span<const ConstraintId> constant)
-    : problem_(&problem), values_(std::move(start)) {
+    : problem_(&problem), values_(std::move(start)), index_(problem.incidence_index()) {
   problem.check_assignment(values_);
   constant_.assign(problem.num_constraints(), 0);
   for (ConstraintId id : constant) {
@@ -39,34 +39,19 @@ void IncrementalEvaluator::resynchronise() {
     const Constraint& c = problem_->constraint(id);
     IncrementalState* state = states_[id].get();
     const bool partial = state && state->supports_partial();
-    tracked_[id] = {state, &c, c.weight(), c.is_hard(), partial};
+    tracked_[id] = {state, &c, c.weight(), c.is_hard(), partial, constant_[id] != 0};
     if (partial) occupied_keys_[id] = state->occupied_keys();
   }
-  if (!links_.empty()) return;  // the links depend on the problem only: built once
-  const std::size_t n = problem_->num_variables();
-  first_link_.assign(n + 1, 0);
-  std::size_t total = 0;
-  for (VariableId v = 0; v < n; ++v) total += problem_->incidences(v).size();
-  links_.reserve(total);
-  for (VariableId v = 0; v < n; ++v) {
-    first_link_[v] = static_cast<std::uint32_t>(links_.size());
-    for (const Incidence& inc : problem_->incidences(v)) {
-      if (!constant_[inc.constraint]) links_.push_back(inc);
-    }
-    if (links_.size() > UINT32_MAX) {
-      throw std::length_error("IncrementalEvaluator: more than 2^32 variable-constraint links");
-    }
-  }
-  first_link_[n] = static_cast<std::uint32_t>(links_.size());
 }
 
 Score IncrementalEvaluator::delta(VariableId var, double new_value) {
   Score change;
   const double old_value = values_[var];
   if (old_value == new_value) return change;
-  const auto var_links = links(var);
-  for (const Incidence& link : var_links) {
+  for (const Incidence& link : links(var)) {
     const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
+    ++evaluations_;
     double dv;
     if (t.state) {
       dv = t.state->delta(values_, link.position, new_value);
@@ -77,16 +62,16 @@ Score IncrementalEvaluator::delta(VariableId var, double new_value) {
     }
     add(change, link.constraint, dv);
   }
-  evaluations_ += var_links.size();
   return change;
 }
 
 void IncrementalEvaluator::assign(VariableId var, double new_value) {
   const double old_value = values_[var];
   if (old_value == new_value) return;
-  const auto var_links = links(var);
-  for (const Incidence& link : var_links) {
+  for (const Incidence& link : links(var)) {
     const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
+    ++evaluations_;
     double dv;
     if (t.state) {
       dv = t.state->delta(values_, link.position, new_value);
@@ -100,13 +85,13 @@ void IncrementalEvaluator::assign(VariableId var, double new_value) {
     add(total_, link.constraint, dv);
   }
   values_[var] = new_value;
-  evaluations_ += var_links.size();
 }
 
 double IncrementalEvaluator::involvement(VariableId var) {
   double sum = 0;
   for (const Incidence& link : links(var)) {
     const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
     const double v =
         t.state ? t.state->involvement(values_, link.position) : violations_[link.constraint];
     sum += t.weight * v;
@@ -116,7 +101,8 @@ double IncrementalEvaluator::involvement(VariableId var) {
 
 bool IncrementalEvaluator::can_retract(VariableId var) const {
   for (const Incidence& link : links(var)) {
-    if (!tracked_[link.constraint].partial) return false;
+    const Tracked& t = tracked_[link.constraint];
+    if (!t.constant && !t.partial) return false;
   }
   return true;
 }
@@ -131,6 +117,7 @@ void IncrementalEvaluator::require_retractable(VariableId var) const {
 void IncrementalEvaluator::retract(VariableId var) {
   require_retractable(var);
   for (const Incidence& link : links(var)) {
+    if (tracked_[link.constraint].constant) continue;
     const double dv = tracked_[link.constraint].state->retract(values_, link.position);
     violations_[link.constraint] += dv;
     add(total_, link.constraint, dv);
@@ -138,24 +125,38 @@ void IncrementalEvaluator::retract(VariableId var) {
 }
 
 void IncrementalEvaluator::retract(std::span<const VariableId> vars) {
-  for (VariableId v : vars) require_retractable(v);
+  // One pass counts, per constraint, the variables retracted (and checks that each can
+  // be, before anything changes); the constraints whose whole scope goes are cleared at
+  // once, and only when some constraint loses part of its scope is a second pass needed.
+  // A permutation group retracted whole (constructive placement) takes the single pass.
   hits_.assign(problem_->num_constraints(), 0);
   for (VariableId v : vars) {
-    for (const Incidence& link : links(v)) ++hits_[link.constraint];
+    for (const Incidence& link : links(v)) {
+      const Tracked& t = tracked_[link.constraint];
+      if (t.constant) continue;
+      if (!t.partial) require_retractable(v);  // throws
+      ++hits_[link.constraint];
+    }
   }
   const auto whole = [&](ConstraintId id) {
     return hits_[id] == problem_->constraint(id).scope().size();
   };
-  for (VariableId v : vars) {
-    for (const Incidence& link : links(v)) {
-      if (whole(link.constraint)) continue;
-      const double dv = tracked_[link.constraint].state->retract(values_, link.position);
-      violations_[link.constraint] += dv;
-      add(total_, link.constraint, dv);
+  bool some_part = false;
+  for (ConstraintId id = 0; id < hits_.size(); ++id) {
+    if (hits_[id] != 0 && !whole(id)) some_part = true;
+  }
+  if (some_part) {
+    for (VariableId v : vars) {
+      for (const Incidence& link : links(v)) {
+        if (tracked_[link.constraint].constant || whole(link.constraint)) continue;
+        const double dv = tracked_[link.constraint].state->retract(values_, link.position);
+        violations_[link.constraint] += dv;
+        add(total_, link.constraint, dv);
+      }
     }
   }
   for (ConstraintId id = 0; id < hits_.size(); ++id) {
-    if (!whole(id)) continue;
+    if (hits_[id] == 0 || !whole(id)) continue;
     const double dv = tracked_[id].state->retract_all(values_, hits_[id]);
     violations_[id] += dv;
     add(total_, id, dv);
@@ -164,18 +165,20 @@ void IncrementalEvaluator::retract(std::span<const VariableId> vars) {
 
 Score IncrementalEvaluator::place_delta(VariableId var, double value) {
   Score change;
-  const auto var_links = links(var);
-  for (const Incidence& link : var_links) {
-    add(change, link.constraint,
-        tracked_[link.constraint].state->place_delta(values_, link.position, value));
+  for (const Incidence& link : links(var)) {
+    const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
+    ++evaluations_;
+    add(change, link.constraint, t.state->place_delta(values_, link.position, value));
   }
-  evaluations_ += var_links.size();
   return change;
 }
 
 void IncrementalEvaluator::place(VariableId var, double value) {
   for (const Incidence& link : links(var)) {
-    IncrementalState* state = tracked_[link.constraint].state;
+    const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
+    IncrementalState* state = t.state;
     const double dv = state->place_delta(values_, link.position, value);
     state->place(values_, link.position, value);
     violations_[link.constraint] += dv;
@@ -186,7 +189,9 @@ void IncrementalEvaluator::place(VariableId var, double value) {
 
 void IncrementalEvaluator::place_free(VariableId var, double value) {
   for (const Incidence& link : links(var)) {
-    const double dv = tracked_[link.constraint].state->place_free(values_, link.position, value);
+    const Tracked& t = tracked_[link.constraint];
+    if (t.constant) continue;
+    const double dv = t.state->place_free(values_, link.position, value);
     if (dv != 0) {
       violations_[link.constraint] += dv;
       add(total_, link.constraint, dv);

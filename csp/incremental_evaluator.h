@@ -5,10 +5,12 @@
 // IncrementalState (value counts for all_different, ...). Constraints without one are
 // re-evaluated with the variable changed, which is still O(arity) and always correct.
 //
-// The per-variable constraint lists are copied into one flat array at construction, and what
-// a delta needs of each constraint (state, weight, hard) into a small per-constraint array,
-// so a delta walks contiguous memory: on 1,000,000-queens the memory traffic, not the
-// arithmetic, is the cost.
+// A delta walks the Problem's own variable -> constraint index (one compressed array,
+// shared, not copied: at a million variables a copy is tens of MB of fresh pages to fault
+// in and fill at every start), and what it needs of each constraint (state, weight, hard,
+// constant) is in one small per-constraint array, so it reads contiguous memory: on
+// 1,000,000-queens the memory traffic, not the arithmetic, is the cost. The Problem must
+// therefore get no new constraint or variable while an evaluator on it lives.
 //
 // Constant constraints: a caller whose moves provably never change some constraints (local
 // search that only swaps values inside an all_different permutation) may name them; they
@@ -67,13 +69,16 @@ class IncrementalEvaluator {
   // without a virtual call: constructive placement calls it millions of times in a row.
   bool place_is_free(VariableId var, double value) {
     for (const Incidence& link : links(var)) {
-      ++evaluations_;
       const IncrementalState::OccupiedKeys& keys = occupied_keys_[link.constraint];
       if (keys.occupied) {
+        ++evaluations_;
         if (keys.is_occupied(link.position, value)) return false;
-      } else if (tracked_[link.constraint].state->place_delta(values_, link.position, value) > 0) {
-        return false;
+        continue;
       }
+      const Tracked& t = tracked_[link.constraint];
+      if (t.constant) continue;
+      ++evaluations_;
+      if (t.state->place_delta(values_, link.position, value) > 0) return false;
     }
     return true;
   }
@@ -91,12 +96,14 @@ class IncrementalEvaluator {
     const Constraint* constraint;
     double weight;
     bool hard;
-    bool partial;  // the state supports partial assignments
+    bool partial;   // the state supports partial assignments
+    bool constant;  // named constant: skipped by every delta and assign
   };
   // Throws std::logic_error unless can_retract(var).
   void require_retractable(VariableId var) const;
+  // Every constraint on `var`, constant ones included (the loops skip those).
   std::span<const Incidence> links(VariableId var) const {
-    return {links_.data() + first_link_[var], links_.data() + first_link_[var + 1]};
+    return {index_.entries + index_.starts[var], index_.entries + index_.starts[var + 1]};
   }
   void add(Score& score, ConstraintId id, double violation_change) const {
     const Tracked& t = tracked_[id];
@@ -107,15 +114,13 @@ class IncrementalEvaluator {
   Assignment values_;
   std::vector<std::unique_ptr<IncrementalState>> states_;
   std::vector<double> violations_;
-  std::vector<char> constant_;    // per constraint
+  std::vector<char> constant_;    // per constraint (also in tracked_, which the loops read)
   std::vector<Tracked> tracked_;  // per constraint
   // Per constraint, the occupied-key view of a partial state that offers one (only
   // place_is_free reads it: kept out of Tracked, which every delta reads).
   std::vector<IncrementalState::OccupiedKeys> occupied_keys_;
-  // The incidences of the non-constant constraints, variable by variable: 8 bytes each and
-  // contiguous (variable v's are [first_link_[v], first_link_[v + 1])).
-  std::vector<std::uint32_t> first_link_;
-  std::vector<Incidence> links_;
+  // The Problem's variable -> constraint index (see links()).
+  Problem::IncidenceIndex index_;
   std::vector<std::uint32_t> hits_;  // retract(vars)'s per-constraint scratch
   Score total_;
   std::size_t evaluations_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace sightline::csp {
@@ -192,6 +193,10 @@ void Problem::build_incidences() const {
   const std::size_t n = num_variables();
   std::size_t total = 0;
   for (const auto& c : constraints_) total += c->scope().size();
+  if (total > UINT32_MAX) {
+    throw std::length_error("problem '" + name_ + "': " + std::to_string(total) +
+                            " variable occurrences in constraint scopes; at most 2^32 - 1");
+  }
   incidence_start_.assign(n + 1, 0);
   for (const auto& c : constraints_) {
     for (VariableId v : c->scope()) ++incidence_start_[v];
@@ -271,7 +276,18 @@ Score Problem::delta(std::span<double> values, VariableId var, double new_value)
 
 Assignment Problem::default_assignment() const {
   Assignment a(num_variables());
-  for (std::size_t i = 0; i < a.size(); ++i) a[i] = domain(static_cast<VariableId>(i)).middle();
+  // Runs of variables share a Domain (a batch from add_variables): its middle is taken
+  // once per run, not once per variable.
+  const Domain* last = nullptr;
+  double middle = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Domain& d = domain(static_cast<VariableId>(i));
+    if (&d != last) {
+      last = &d;
+      middle = d.middle();
+    }
+    a[i] = middle;
+  }
   return a;
 }
 
@@ -281,9 +297,20 @@ void Problem::check_assignment(std::span<const double> values) const {
                                 " values but the problem has " +
                                 std::to_string(num_variables()) + " variables");
   }
+  // An integer range, the usual discrete domain, is tested here without a call (this runs
+  // over every variable at every start and check); other kinds ask the Domain.
+  const Domain* last = nullptr;
+  bool integer_range = false;
   for (std::size_t i = 0; i < values.size(); ++i) {
     const auto v = static_cast<VariableId>(i);
-    if (std::isnan(values[i]) || !domain(v).contains(values[i])) {
+    const Domain& d = domain(v);
+    if (&d != last) {
+      last = &d;
+      integer_range = d.kind() == DomainKind::kIntegerRange;
+    }
+    const double x = values[i];
+    if (integer_range && x >= d.lower() && x <= d.upper() && x == std::floor(x)) continue;
+    if (integer_range || std::isnan(x) || !d.contains(x)) {
       throw std::invalid_argument("value " + std::to_string(values[i]) + " of variable '" +
                                   variable_name(v) + "' is outside its domain " +
                                   domain(v).describe());

@@ -96,11 +96,24 @@ class Problem {
   Constraint& mutable_constraint(ConstraintId id) { return *constraints_[id]; }
   // The constraints `id` takes part in, in order of addition. The index is built on the
   // first call after constraints were added (O(total scope size)); the span stays valid
-  // until a constraint is added.
+  // until a constraint is added. Throws std::length_error when the scopes hold 2^32 or
+  // more variable occurrences in all.
   std::span<const Incidence> incidences(VariableId id) const {
     if (!incidence_ready_.load(std::memory_order_acquire)) build_incidences();
     return {incidence_.data() + incidence_start_[id],
             incidence_start_[id + 1] - incidence_start_[id]};
+  }
+  // The whole index at once, for code that walks it in hot loops and should not test
+  // whether it is built at every call (IncrementalEvaluator shares it instead of keeping
+  // a copy): variable v's incidences are entries[starts[v] .. starts[v + 1]). Built here if
+  // needed; valid, like incidences(), until a constraint or variable is added.
+  struct IncidenceIndex {
+    const Incidence* entries;
+    const std::uint32_t* starts;  // num_variables() + 1 of them
+  };
+  IncidenceIndex incidence_index() const {
+    if (!incidence_ready_.load(std::memory_order_acquire)) build_incidences();
+    return {incidence_.data(), incidence_start_.data()};
   }
 
   Parameters& parameters() { return parameters_; }
@@ -160,8 +173,10 @@ class Problem {
   std::vector<std::unique_ptr<Constraint>> constraints_;
   // CSR index: variable v's incidences are incidence_[incidence_start_[v] ..
   // incidence_start_[v + 1]), rebuilt lazily after constraints or variables were added.
+  // The starts are 32-bit (4 bytes a variable, not 8): 2^32 incidences would be 32 GB of
+  // index, so a problem that large is refused when the index is built (std::length_error).
   mutable std::vector<Incidence> incidence_;
-  mutable std::vector<std::size_t> incidence_start_{0};
+  mutable std::vector<std::uint32_t> incidence_start_{0};
   mutable std::atomic<bool> incidence_ready_{true};
   mutable std::mutex incidence_mutex_;
   Parameters parameters_;

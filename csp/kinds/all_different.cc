@@ -66,7 +66,7 @@ class DenseState final : public IncrementalState {
         slots_(c.scope().size()) {
     const auto scope = c.scope();
     for (std::size_t i = 0; i < scope.size(); ++i) {
-      slots_[i].shift = static_cast<Shift>(static_cast<std::int64_t>(c.offsets()[i]) - range.lo);
+      slots_[i].shift = static_cast<Shift>(static_cast<std::int64_t>(c.offset(i)) - range.lo);
       slots_[i].index = static_cast<Shift>(index(i, values[scope[i]]));
       violation_ += join(static_cast<std::size_t>(slots_[i].index));
     }
@@ -199,11 +199,12 @@ class DenseState final : public IncrementalState {
 bool fits_32_bits(const AllDifferent& c, AllDifferent::KeyRange range) {
   constexpr std::int64_t kMax = INT32_MAX;
   if (range.hi - range.lo >= kMax) return false;
-  for (double o : c.offsets()) {
+  const auto fits = [&](double o) {
     const std::int64_t shift = static_cast<std::int64_t>(o) - range.lo;
-    if (shift > kMax || shift < -kMax) return false;
-  }
-  return true;
+    return shift <= kMax && shift >= -kMax;
+  };
+  if (c.has_zero_offsets()) return fits(0);
+  return std::all_of(c.offsets().begin(), c.offsets().end(), fits);
 }
 
 // Counts in a hash map keyed by the (real) key itself.
@@ -227,7 +228,7 @@ class CountingState final : public IncrementalState {
  public:
   CountingState(const AllDifferent& c, Counts counts, std::span<const double> values)
       : scope_(c.scope()),
-        offsets_(c.offsets()),
+        offsets_(c.offsets()),  // empty: all zero
         measure_(c.measure()),
         counts_(std::move(counts)) {
     for (std::size_t i = 0; i < scope_.size(); ++i) counts_.add(key_at(values, i), 1);
@@ -235,14 +236,14 @@ class CountingState final : public IncrementalState {
 
   double delta(std::span<const double> values, std::size_t position, double new_value) override {
     const auto a = key_at(values, position);
-    const auto b = counts_.key(new_value + offsets_[position]);
+    const auto b = counts_.key(new_value + offset(position));
     if (a == b) return 0;
     return move_delta(measure_, counts_.count(a), counts_.count(b));
   }
 
   void commit(std::span<const double> values, std::size_t position, double new_value) override {
     const auto a = key_at(values, position);
-    const auto b = counts_.key(new_value + offsets_[position]);
+    const auto b = counts_.key(new_value + offset(position));
     if (a == b) return;
     counts_.add(a, -1);
     counts_.add(b, 1);
@@ -260,15 +261,18 @@ class CountingState final : public IncrementalState {
     return change;
   }
   double place_delta(std::span<const double>, std::size_t position, double new_value) override {
-    return join_delta(measure_, counts_.count(counts_.key(new_value + offsets_[position])));
+    return join_delta(measure_, counts_.count(counts_.key(new_value + offset(position))));
   }
   void place(std::span<const double>, std::size_t position, double new_value) override {
-    counts_.add(counts_.key(new_value + offsets_[position]), 1);
+    counts_.add(counts_.key(new_value + offset(position)), 1);
   }
 
  private:
   typename Counts::Key key_at(std::span<const double> values, std::size_t position) const {
-    return counts_.key(values[scope_[position]] + offsets_[position]);
+    return counts_.key(values[scope_[position]] + offset(position));
+  }
+  double offset(std::size_t position) const {
+    return offsets_.empty() ? 0.0 : offsets_[position];
   }
 
   std::span<const VariableId> scope_;
@@ -286,8 +290,7 @@ AllDifferent::AllDifferent(std::vector<VariableId> scope, std::vector<double> of
       offsets_(std::move(offsets)),
       measure_(measure),
       key_range_(key_range) {
-  if (offsets_.empty()) offsets_.assign(this->scope().size(), 0.0);
-  if (offsets_.size() != this->scope().size()) {
+  if (!offsets_.empty() && offsets_.size() != this->scope().size()) {
     throw std::invalid_argument("all_different: " + std::to_string(offsets_.size()) +
                                 " offsets for " + std::to_string(this->scope().size()) +
                                 " variables");
@@ -295,14 +298,14 @@ AllDifferent::AllDifferent(std::vector<VariableId> scope, std::vector<double> of
   for (double o : offsets_) {
     if (!std::isfinite(o)) throw std::invalid_argument("all_different: offsets must be finite");
   }
+  if (std::all_of(offsets_.begin(), offsets_.end(), [](double o) { return o == 0; })) {
+    std::vector<double>().swap(offsets_);  // all zero: kept as none (see the header)
+  }
   if (key_range_ && key_range_->hi < key_range_->lo) {
     throw std::invalid_argument("all_different: empty key range");
   }
 }
 
-bool AllDifferent::has_zero_offsets() const {
-  return std::all_of(offsets_.begin(), offsets_.end(), [](double o) { return o == 0; });
-}
 
 namespace {
 // violation and min_violation work in these per-thread buffers, which grow to the largest
@@ -342,7 +345,7 @@ double AllDifferent::min_violation(std::span<const double> values,
   std::vector<double>& keys = key_scratch();
   keys.clear();
   for (std::size_t i = 0; i < scope.size(); ++i) {
-    if (assigned[scope[i]]) keys.push_back(values[scope[i]] + offsets_[i]);
+    if (assigned[scope[i]]) keys.push_back(values[scope[i]] + offset(i));
   }
   return repeats(keys, measure_);
 }
@@ -357,8 +360,9 @@ bool for_each_dense_key(std::span<const VariableId> scope, std::span<const doubl
                         std::size_t size, Count&& count) {
   const auto lo = static_cast<double>(range.lo);
   const auto limit = static_cast<double>(size);
+  const bool zero = offsets.empty();  // all offsets zero
   for (std::size_t i = 0; i < scope.size(); ++i) {
-    const double key = values[scope[i]] + offsets[i] - lo;
+    const double key = values[scope[i]] + (zero ? 0.0 : offsets[i]) - lo;
     if (!(key >= 0 && key < limit)) return false;  // also false for NaN
     const auto k = static_cast<std::int64_t>(key);
     if (static_cast<double>(k) != key) return false;  // not an integer
@@ -401,7 +405,7 @@ double AllDifferent::violation(std::span<const double> values) const {
   }
   std::vector<double>& keys = key_scratch();
   keys.resize(scope.size());
-  for (std::size_t i = 0; i < scope.size(); ++i) keys[i] = values[scope[i]] + offsets_[i];
+  for (std::size_t i = 0; i < scope.size(); ++i) keys[i] = values[scope[i]] + offset(i);
   return repeats(keys, measure_);
 }
 

@@ -43,7 +43,9 @@ class AllDifferent : public Constraint {
     std::int64_t hi = -1;
   };
 
-  // `offsets` is empty (all zero) or has one entry per scope variable. `key_range`, when
+  // `offsets` is empty (all zero) or has one entry per scope variable. All-zero offsets are
+  // not kept (a million-variable alldifferent would hold 8 MB of zeros, read at every
+  // evaluation). `key_range`, when
   // given, must contain every key the scope's domains can produce (key_range_from_domains
   // computes it); without it the incremental state counts in a hash map.
   AllDifferent(std::vector<VariableId> scope, std::vector<double> offsets = {},
@@ -61,9 +63,13 @@ class AllDifferent : public Constraint {
       std::span<const double> values) const override;
 
   Measure measure() const { return measure_; }
-  // One offset per scope position (all zero when none were given).
+  // One offset per scope position, or none at all when every offset is zero; offset()
+  // reads either.
   std::span<const double> offsets() const { return offsets_; }
-  bool has_zero_offsets() const;
+  double offset(std::size_t position) const {
+    return offsets_.empty() ? 0.0 : offsets_[position];
+  }
+  bool has_zero_offsets() const { return offsets_.empty(); }
   const std::optional<KeyRange>& key_range() const { return key_range_; }
 
   // "var" / "dec"; parse_measure returns nullopt for anything else.

@@ -62,6 +62,13 @@ class BestKeeper {
 
   // The best assignment; call materialise() first.
   const csp::Assignment& best() const { return stored_; }
+  // The same, moved out at the end of a search (a copy of a million values saved); the
+  // keeper holds nothing until the next reset().
+  csp::Assignment take_best() {
+    csp::Assignment best = std::move(stored_);
+    stored_.clear();
+    return best;
+  }
 
  private:
   csp::Assignment stored_;

@@ -45,7 +45,7 @@ std::optional<csp::Score> DiscreteSearch::run(std::span<const double> start,
   if (!check_target() && options_.greedy_start) greedy_pass();
   main_loop();
   best_.materialise(evaluator_->values());
-  result.best = best_.best();
+  result.best = best_.take_best();  // the search is over: no copy
   result.evaluations = evaluations_;
   result.iterations = iterations_;
   result.stop = stop_;
@@ -79,12 +79,15 @@ bool DiscreteSearch::is_permutation(const PermutationGroup& g, const csp::Assign
 
 void DiscreteSearch::deal_group(const PermutationGroup& g, csp::Assignment& values) {
   for (const auto& [v, value] : g.pinned) values[v] = value;
-  for (std::size_t i = 0; i < g.free.size(); ++i) values[g.free[i]] = g.free_values[i];
+  const auto free = g.free_variables();
+  const auto free_values = g.free_values();
+  for (std::size_t i = 0; i < free.size(); ++i) values[free[i]] = free_values[i];
 }
 
 void DiscreteSearch::shuffle_group(const PermutationGroup& g, csp::Assignment& values) {
-  for (std::size_t i = g.free.size(); i > 1; --i) {  // Fisher-Yates
-    std::swap(values[g.free[i - 1]], values[g.free[random_.index(i)]]);
+  const auto free = g.free_variables();
+  for (std::size_t i = free.size(); i > 1; --i) {  // Fisher-Yates
+    std::swap(values[free[i - 1]], values[free[random_.index(i)]]);
   }
 }
 
@@ -121,10 +124,9 @@ void DiscreteSearch::begin_run(csp::Assignment values) {
   ++evaluations_;
   run_best_ = evaluator_->score();
   stall_ = 0;
-  tabu_until_.assign(n_, 0);
-  tabu_value_.assign(n_, 0.0);
+  tabu_.reset(n_);
   list_.clear();
-  listed_.assign(n_, 0);
+  listed_.reset(n_);
   breakout_.reset(problem_.num_constraints());
 }
 
@@ -218,18 +220,20 @@ void DiscreteSearch::greedy_pass() {
       const PlacementReport placement =
           place_group(*evaluator_, g, options_.placement_attempts, random_, pool_);
       evaluations_ += placement.draws;
-      iterations_ += g.free.size();
+      const auto free = g.free_variables();
+      iterations_ += free.size();
       // Placed variables added no cost, so every conflict left involves a left-over one:
       // they start the conflict list without a scan (the usual scans follow if it empties).
-      for (std::size_t k = placement.placed; k < g.free.size(); ++k) {
-        if (evaluator_->involvement(g.free[k]) > 0) push(g.free[k]);
+      for (std::size_t k = placement.placed; k < free.size(); ++k) {
+        if (evaluator_->involvement(free[k]) > 0) push(free[k]);
       }
       if (evaluator_->score().better_than(best_.score())) new_best(evaluator_->score());
       check_target();
       continue;
     }
-    for (std::size_t k = 0; k + 1 < g.free.size() && !out_of_budget(); ++k) {
-      const csp::VariableId v = g.free[k];
+    const auto free = g.free_variables();
+    for (std::size_t k = 0; k + 1 < free.size() && !out_of_budget(); ++k) {
+      const csp::VariableId v = free[k];
       if (evaluator_->involvement(v) <= 0) continue;
       ++iterations_;
       if (greedy_swap(v, k + 1)) after_move();

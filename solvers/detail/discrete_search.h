@@ -21,6 +21,7 @@
 #include "solvers/detail/breakout_weights.h"
 #include "solvers/detail/permutation_groups.h"
 #include "solvers/detail/random.h"
+#include "solvers/detail/zeroed_array.h"
 #include "solvers/sls.h"
 
 namespace sightline::solvers::detail {
@@ -159,8 +160,14 @@ class DiscreteSearch {
   std::unique_ptr<csp::IncrementalEvaluator> evaluator_;
   BestKeeper best_;
   csp::Score run_best_;
-  std::vector<std::uint64_t> tabu_until_;  // step until which tabu_value_ is forbidden
-  std::vector<double> tabu_value_;         // the value the variable last left
+  // Per variable, the value it last left and the step until which it may not go back:
+  // side by side, as is_tabu reads both, and zero at each start without writing them (a
+  // run may touch few variables; see ZeroedArray).
+  struct Tabu {
+    std::uint64_t until;
+    double value;
+  };
+  ZeroedArray<Tabu> tabu_;
   static constexpr std::size_t kFinalists = 4;
   std::array<csp::VariableId, kFinalists> finalists_{};  // swap_step's best-screened partners
   std::vector<csp::VariableId> list_;                    // variables believed to be in conflict
@@ -169,7 +176,7 @@ class DiscreteSearch {
   std::vector<char> dealt_;   // per group: dealt in order this run, for placement to re-deal
   std::vector<char> seen_;    // is_permutation's marks
   std::vector<double> pool_;  // place_group's scratch
-  std::vector<char> listed_;
+  ZeroedArray<char> listed_;  // per variable: in list_
   std::uint64_t last_rescan_ = 0, rescan_work_ = 0;  // in evaluations
 
   std::uint64_t evaluations_ = 0, iterations_ = 0;

@@ -8,13 +8,13 @@
 namespace sightline::solvers::detail {
 
 bool DiscreteSearch::is_tabu(csp::VariableId v, double value) const {
-  return tabu_until_[v] > iterations_ && tabu_value_[v] == value;
+  const Tabu& t = tabu_[v];
+  return t.until > iterations_ && t.value == value;
 }
 
 void DiscreteSearch::note_change(csp::VariableId v, double old_value) {
   best_.log_change(v, old_value);
-  tabu_value_[v] = old_value;
-  tabu_until_[v] = iterations_ + static_cast<std::uint64_t>(options_.tabu_tenure);
+  tabu_[v] = {iterations_ + static_cast<std::uint64_t>(options_.tabu_tenure), old_value};
 }
 
 void DiscreteSearch::apply(csp::VariableId v, double value) {
@@ -76,7 +76,7 @@ bool DiscreteSearch::value_step(csp::VariableId v, bool greedy) {
 
 bool DiscreteSearch::greedy_swap(csp::VariableId v, std::size_t first) {
   const PermutationGroup& g = groups_[static_cast<std::size_t>(group_of_[v])];
-  const std::size_t size = g.free.size();
+  const std::size_t size = g.free_variables().size();
   if (first >= size) return false;
   const double vi = evaluator_->values()[v];
   std::size_t window = size - first;
@@ -86,7 +86,7 @@ bool DiscreteSearch::greedy_swap(csp::VariableId v, std::size_t first) {
   bool screened = false;
   csp::Score best_half;
   for (std::int64_t t = 0; t < options_.greedy_samples; ++t) {
-    const csp::VariableId j = g.free[first + random_.index(window)];
+    const csp::VariableId j = g.free_variables()[first + random_.index(window)];
     if (out_of_budget()) return false;
     const double vj = evaluator_->values()[j];
     // Screen first with the cheap half of the swap (v's side only), and try for real only
@@ -115,7 +115,7 @@ bool DiscreteSearch::greedy_swap(csp::VariableId v, std::size_t first) {
 
 bool DiscreteSearch::swap_step(csp::VariableId v, csp::VariableId& partner) {
   const PermutationGroup& g = groups_[static_cast<std::size_t>(group_of_[v])];
-  const std::size_t size = g.free.size();
+  const std::size_t size = g.free_variables().size();
   if (size < 2) return false;
   if (size - 1 <= static_cast<std::size_t>(options_.swap_samples)) {
     return small_swap_step(v, g, partner);
@@ -124,7 +124,7 @@ bool DiscreteSearch::swap_step(csp::VariableId v, csp::VariableId& partner) {
   std::size_t finalists = 0;
   csp::Score best_half;
   for (std::int64_t t = 0; t < options_.swap_samples; ++t) {
-    const csp::VariableId candidate = g.free[random_.index(size)];
+    const csp::VariableId candidate = g.free_variables()[random_.index(size)];
     if (candidate == v) continue;
     if (out_of_budget()) return false;
     const csp::Score half = evaluator_->delta(v, evaluator_->values()[candidate]);
@@ -164,7 +164,7 @@ bool DiscreteSearch::swap_step(csp::VariableId v, csp::VariableId& partner) {
   }
   // A local minimum for v: sometimes a random swap instead (random walk).
   if (!random_.chance(options_.walk_probability) || out_of_budget()) return false;
-  partner = g.free[random_.index(size)];
+  partner = g.free_variables()[random_.index(size)];
   if (partner == v) return false;
   ++evaluations_;
   swap(v, partner);
@@ -177,7 +177,7 @@ bool DiscreteSearch::small_swap_step(csp::VariableId v, const PermutationGroup& 
   csp::VariableId chosen = v;
   csp::Score best;
   std::size_t ties = 0;
-  for (csp::VariableId j : g.free) {
+  for (csp::VariableId j : g.free_variables()) {
     if (j == v) continue;
     if (out_of_budget()) return false;
     const double vj = evaluator_->values()[j];
@@ -206,7 +206,7 @@ bool DiscreteSearch::small_swap_step(csp::VariableId v, const PermutationGroup& 
   }
   breakout_.bump(*evaluator_, v);
   if (!random_.chance(options_.walk_probability) || out_of_budget()) return false;
-  partner = g.free[random_.index(g.free.size())];
+  partner = g.free_variables()[random_.index(g.free_variables().size())];
   if (partner == v) return false;
   ++evaluations_;
   swap(v, partner);

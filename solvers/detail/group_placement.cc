@@ -8,7 +8,7 @@
 namespace sightline::solvers::detail {
 
 bool can_place_group(const csp::IncrementalEvaluator& evaluator, const PermutationGroup& group) {
-  for (csp::VariableId v : group.free) {
+  for (csp::VariableId v : group.free_variables()) {
     if (!evaluator.can_retract(v)) return false;
   }
   return true;
@@ -18,11 +18,12 @@ PlacementReport place_group(csp::IncrementalEvaluator& evaluator, const Permutat
                             double attempts_per_variable, Random& random,
                             std::vector<double>& pool) {
   PlacementReport report;
-  const std::size_t k = group.free.size();
+  const auto free = group.free_variables();
+  const std::size_t k = free.size();
   if (k == 0) return report;
   pool.resize(k);
-  for (std::size_t i = 0; i < k; ++i) pool[i] = evaluator.values()[group.free[i]];
-  evaluator.retract(group.free);
+  for (std::size_t i = 0; i < k; ++i) pool[i] = evaluator.values()[free[i]];
+  evaluator.retract(free);
   // pool[0, placed) holds the values dealt out, in the placed variables' order; the rest
   // are the values still to deal.
   const auto attempts =
@@ -49,7 +50,7 @@ PlacementReport place_group(csp::IncrementalEvaluator& evaluator, const Permutat
     const std::size_t m = placed + Random::scale(slot, k - placed);
     slot = random.bits();
     prefetch(slot);
-    const csp::VariableId v = group.free[placed];
+    const csp::VariableId v = free[placed];
     ++report.draws;
     if (!evaluator.place_is_free(v, pool[m])) continue;
     std::swap(pool[placed], pool[m]);
@@ -58,7 +59,7 @@ PlacementReport place_group(csp::IncrementalEvaluator& evaluator, const Permutat
   }
   report.placed = placed;
   report.left_over = k - placed;
-  for (std::size_t i = placed; i < k; ++i) evaluator.place(group.free[i], pool[i]);
+  for (std::size_t i = placed; i < k; ++i) evaluator.place(free[i], pool[i]);
   return report;
 }
 

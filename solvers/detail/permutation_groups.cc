@@ -57,11 +57,12 @@ std::vector<double> allowed_values(const csp::Problem& problem, csp::VariableId 
 // the rest as free (see the header). No pins at all when two would share a value.
 void pin(const csp::Problem& problem, const std::vector<char>& hard_unary,
          PermutationGroup& group, csp::Assignment& scratch) {
-  std::vector<char> value_pinned(group.values.size(), 0);
+  std::vector<char> value_pinned;  // made when the first pin is found
   bool consistent = true;
   for (csp::VariableId v : group.variables) {
     if (group.values.size() < 2) break;
     if (!hard_unary[v]) continue;  // the usual case: nothing can pin it
+    if (value_pinned.empty()) value_pinned.assign(group.values.size(), 0);
     const std::vector<double> allowed = allowed_values(problem, v, group.values, scratch);
     if (allowed.size() != 1) continue;
     const auto k = static_cast<std::size_t>(
@@ -72,6 +73,7 @@ void pin(const csp::Problem& problem, const std::vector<char>& hard_unary,
     group.pinned.emplace_back(v, allowed[0]);
   }
   if (!consistent) group.pinned.clear();
+  if (group.pinned.empty()) return;  // free_variables() and free_values() are the whole group
   std::fill(value_pinned.begin(), value_pinned.end(), 0);
   std::vector<char> variable_pinned(group.variables.size(), 0);
   for (const auto& [v, value] : group.pinned) {
@@ -81,11 +83,11 @@ void pin(const csp::Problem& problem, const std::vector<char>& hard_unary,
     variable_pinned[static_cast<std::size_t>(
         std::find(group.variables.begin(), group.variables.end(), v) - group.variables.begin())] = 1;
   }
-  group.free.reserve(group.variables.size() - group.pinned.size());
-  group.free_values.reserve(group.values.size() - group.pinned.size());
+  group.unpinned_variables.reserve(group.variables.size() - group.pinned.size());
+  group.unpinned_values.reserve(group.values.size() - group.pinned.size());
   for (std::size_t i = 0; i < group.variables.size(); ++i) {
-    if (!variable_pinned[i]) group.free.push_back(group.variables[i]);
-    if (!value_pinned[i]) group.free_values.push_back(group.values[i]);
+    if (!variable_pinned[i]) group.unpinned_variables.push_back(group.variables[i]);
+    if (!value_pinned[i]) group.unpinned_values.push_back(group.values[i]);
   }
 }
 
@@ -115,7 +117,7 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
     if (!fits) continue;
     PermutationGroup group;
     group.constraint = id;
-    group.variables.assign(scope.begin(), scope.end());
+    group.variables = scope;
     group.values.resize(first.size());
     for (std::size_t i = 0; i < first.size(); ++i) group.values[i] = first.value_at(i);
     for (csp::VariableId v : scope) taken[v] = 1;

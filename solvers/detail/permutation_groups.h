@@ -15,6 +15,7 @@
 // otherwise the group has none and the search sorts the clash out by itself.
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -23,13 +24,27 @@
 namespace sightline::solvers::detail {
 
 struct PermutationGroup {
-  csp::ConstraintId constraint = 0;        // the all_different that makes it a group: swaps
-                                           // inside the group never change its violation (0)
-  std::vector<csp::VariableId> variables;  // in scope order
-  std::vector<double> values;              // the common domain's values, ascending
-  std::vector<csp::VariableId> free;       // the variables not pinned, in scope order
-  std::vector<double> free_values;         // the values not pinned, ascending
+  csp::ConstraintId constraint = 0;  // the all_different that makes it a group: swaps
+                                     // inside the group never change its violation (0)
+  // In scope order: the all_different's own scope (a view, not a copy: the Problem
+  // outlives the search, and a million-variable group would copy 4 MB at every solve).
+  std::span<const csp::VariableId> variables;
+  std::vector<double> values;  // the common domain's values, ascending
   std::vector<std::pair<csp::VariableId, double>> pinned;  // variable, its only value
+
+  // The variables not pinned, in scope order, and the values not pinned, ascending. With
+  // no pins (the usual case) they are `variables` and `values` themselves, not copies.
+  std::span<const csp::VariableId> free_variables() const {
+    return pinned.empty() ? variables : std::span<const csp::VariableId>(unpinned_variables);
+  }
+  std::span<const double> free_values() const {
+    return pinned.empty() ? std::span<const double>(values)
+                          : std::span<const double>(unpinned_values);
+  }
+
+  // Filled only when something is pinned (find_permutation_groups).
+  std::vector<csp::VariableId> unpinned_variables;
+  std::vector<double> unpinned_values;
 };
 
 std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& problem);

@@ -2,10 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
 #include "csp/kinds/abs_deviation.h"
+#include "csp/kinds/all_different.h"
 #include "csp/kinds/linear.h"
 #include "csp/kinds/not_equal.h"
 #include "incremental_check.h"
@@ -244,6 +248,38 @@ TEST(Problem, CheckAssignmentNamesTheOffendingVariable) {
   EXPECT_THROW(p->check_assignment(Assignment{0, 1, std::nan("")}), std::invalid_argument);
 }
 
+// check_assignment tests integer ranges inline and asks the Domain otherwise: on every kind,
+// batch or single, it must refuse exactly the values Domain::contains refuses (and NaN), and
+// default_assignment must give each variable its own domain's middle.
+TEST(Problem, CheckAssignmentAgreesWithTheDomainOnEveryKind) {
+  Problem p("kinds");
+  p.add_variables("b", 3, Domain::integer_range(-1, 3));
+  p.add_variable("s", Domain::value_set({0.5, 2, 7}));
+  p.add_variables("c", 2, Domain::integer_range(0, 1));
+  p.add_variable("r", Domain::real_interval(-1, 2.5));
+  p.add_variable("i", Domain::integer_range(2, 4));
+  const Assignment middle = p.default_assignment();
+  for (VariableId v = 0; v < p.num_variables(); ++v) {
+    EXPECT_EQ(middle[v], p.domain(v).middle()) << "variable " << v;
+  }
+  EXPECT_NO_THROW(p.check_assignment(middle));
+  const double probes[] = {-2, -1, -0.5, 0, 0.5, 1, 2, 2.5, 3, 3.5, 4, 7, 1e300,
+                           std::numeric_limits<double>::infinity(), std::nan("")};
+  for (VariableId v = 0; v < p.num_variables(); ++v) {
+    for (double x : probes) {
+      Assignment a = middle;
+      a[v] = x;
+      const bool valid = !std::isnan(x) && p.domain(v).contains(x);
+      if (valid) {
+        EXPECT_NO_THROW(p.check_assignment(a)) << "variable " << v << " = " << x;
+      } else {
+        EXPECT_THROW(p.check_assignment(a), std::invalid_argument)
+            << "variable " << v << " = " << x;
+      }
+    }
+  }
+}
+
 TEST(Problem, DefaultAssignmentTakesEachDomainsMiddle) {
   const auto p = small_problem();
   EXPECT_EQ(p->default_assignment(), (Assignment{2, 2, 2}));
@@ -288,6 +324,152 @@ TEST(IncrementalEvaluator, ConstantConstraintsStayInTheScoreButLeaveTheDeltas) {
   }
   EXPECT_THROW(IncrementalEvaluator(*p, Assignment{1, 1, 0}, std::vector<ConstraintId>{9}),
                std::invalid_argument);
+}
+
+// The evaluator walks the Problem's shared incidence index and skips the constraints named
+// constant itself (it used to copy per-variable lists of the others). On random problems
+// mixing kinds with and without incremental states, hard and soft, some constraints named
+// constant, everything is checked against per-variable lists of the non-constant
+// constraints built here from the scopes alone: each delta is the weighted change of those
+// constraints only, evaluated in full; evaluations() grows by their number; the running
+// score is theirs plus the constant ones' score at the start (constants are not followed);
+// can_retract holds exactly when all of them are all_differents (the one kind with partial
+// assignments); and a retract / place_delta / place round trip agrees with full evaluation.
+TEST(IncrementalEvaluator, SharedIncidencesSkipConstantConstraintsLikeSeparateLists) {
+  std::mt19937 rng(2026);
+  for (int round = 0; round < 40; ++round) {
+    Problem p("random");
+    const std::size_t n = 4 + rng() % 9;
+    const VariableId first = p.add_variables("x", n, Domain::integer_range(0, 4));
+    auto random_scope = [&](std::size_t size) {
+      std::vector<VariableId> all(n);
+      for (std::size_t i = 0; i < n; ++i) all[i] = first + static_cast<VariableId>(i);
+      std::shuffle(all.begin(), all.end(), rng);
+      all.resize(std::min(size, n));
+      return all;
+    };
+    const std::size_t m = 2 + rng() % 9;
+    std::vector<char> constant(m, 0);
+    std::vector<ConstraintId> constant_ids;
+    std::vector<char> is_all_different(m, 0);
+    for (ConstraintId c = 0; c < m; ++c) {
+      const bool hard = rng() % 2 == 0;
+      const double weight = 1 + static_cast<double>(rng() % 4);
+      switch (rng() % 3) {
+        case 0: {
+          const auto s = random_scope(2);
+          p.add_constraint(std::make_unique<NotEqual>(s[0], s[1], 1, weight, hard));
+          break;
+        }
+        case 1: {
+          const auto s = random_scope(1 + rng() % 4);
+          std::vector<double> coefficients(s.size());
+          for (double& a : coefficients) a = static_cast<double>(rng() % 5) - 2;
+          p.add_constraint(std::make_unique<LinearConstraint>(s, coefficients,
+                                                              Relation::kLessEqual, 3, weight));
+          p.mutable_constraint(c).set_hard(hard);
+          break;
+        }
+        default: {
+          const auto s = random_scope(2 + rng() % 4);
+          std::vector<double> offsets(s.size());
+          for (double& o : offsets) o = static_cast<double>(rng() % 3);
+          const auto range = key_range_from_domains(p, s, offsets);
+          p.add_constraint(std::make_unique<AllDifferent>(
+              s, offsets, AllDifferent::Measure::kVariables, weight, hard, range));
+          is_all_different[c] = 1;
+        }
+      }
+      if (rng() % 3 == 0) {
+        constant[c] = 1;
+        constant_ids.push_back(c);
+      }
+    }
+    // The old layout: per variable, the non-constant constraints and positions, from scopes.
+    std::vector<std::vector<ConstraintId>> lists(n);
+    for (ConstraintId c = 0; c < m; ++c) {
+      if (constant[c]) continue;
+      for (VariableId v : p.constraint(c).scope()) lists[v].push_back(c);
+    }
+    Assignment values(n);
+    for (double& x : values) x = static_cast<double>(rng() % 5);
+    IncrementalEvaluator e(p, values, constant_ids);
+    Score constant_part;
+    for (ConstraintId c : constant_ids) constant_part += p.constraint_score(c, values);
+    for (VariableId v = 0; v < n; ++v) {
+      const bool retractable = std::all_of(lists[v].begin(), lists[v].end(),
+                                           [&](ConstraintId c) { return is_all_different[c]; });
+      EXPECT_EQ(e.can_retract(v), retractable) << "round " << round << ", variable " << v;
+    }
+    auto running = [&](const Assignment& a) {
+      Score sum = constant_part;
+      for (ConstraintId c = 0; c < m; ++c) {
+        if (!constant[c]) sum += p.constraint_score(c, a);
+      }
+      return sum;
+    };
+    auto close = [](const Score& a, const Score& b) {
+      return std::abs(a.hard - b.hard) < 1e-9 && std::abs(a.soft - b.soft) < 1e-9;
+    };
+    for (int step = 0; step < 60; ++step) {
+      const auto v = static_cast<VariableId>(rng() % n);
+      const auto value = static_cast<double>(rng() % 5);
+      Assignment after = e.values();
+      after[v] = value;
+      Score expected;
+      for (ConstraintId c : lists[v]) {
+        expected += p.constraint_score(c, after) - p.constraint_score(c, e.values());
+      }
+      const std::size_t before = e.evaluations();
+      const Score got = e.delta(v, value);
+      ASSERT_TRUE(close(got, expected)) << "round " << round << ", step " << step;
+      EXPECT_EQ(e.evaluations() - before, value == e.values()[v] ? 0 : lists[v].size());
+      if (step % 3 == 2) continue;
+      e.assign(v, value);
+      ASSERT_TRUE(close(e.score(), running(e.values()))) << "round " << round << ", step " << step;
+      if (!e.can_retract(v)) continue;
+      e.retract(v);
+      const Score retracted = e.score();
+      const Score placed = e.place_delta(v, value);
+      e.place(v, value);
+      ASSERT_TRUE(close(e.score(), running(e.values()))) << "round " << round << ", step " << step;
+      EXPECT_TRUE(close(e.score() - retracted, placed)) << "round " << round << ", step " << step;
+    }
+    // A group retracted at once (whole all_differents cleared in one go, the others one
+    // variable at a time): the score is then that of the variables present (min_violation
+    // of an all_different counts the repeats among them), and placing them back restores it.
+    std::vector<VariableId> group;
+    std::vector<std::uint8_t> present(n, 1);
+    for (VariableId v = 0; v < n; ++v) {
+      if (e.can_retract(v) && rng() % 2 == 0) {
+        group.push_back(v);
+        present[v] = 0;
+      }
+    }
+    if (group.empty()) continue;
+    const Assignment kept = e.values();
+    const Score all_present = e.score();
+    e.retract(group);
+    Score expected = constant_part;
+    for (ConstraintId c = 0; c < m; ++c) {
+      if (constant[c]) continue;
+      const Constraint& k = p.constraint(c);
+      const double violation = k.min_violation(kept, present);
+      (k.is_hard() ? expected.hard : expected.soft) += k.weight() * violation;
+    }
+    EXPECT_TRUE(close(e.score(), expected)) << "round " << round << ", " << group.size()
+                                            << " retracted";
+    for (VariableId v : group) e.place(v, kept[v]);
+    EXPECT_TRUE(close(e.score(), all_present)) << "round " << round;
+    // A group with a variable that cannot retract is refused before anything changes.
+    for (VariableId v = 0; v < n; ++v) {
+      if (e.can_retract(v)) continue;
+      group.push_back(v);
+      EXPECT_THROW(e.retract(group), std::logic_error) << "round " << round;
+      EXPECT_TRUE(close(e.score(), all_present)) << "round " << round;
+      break;
+    }
+  }
 }
 
 }  // namespace

@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <string>
+#include <type_traits>
 
 #include "solvers/detail/best_keeper.h"
 #include "solvers/detail/permutation_groups.h"
@@ -21,6 +23,11 @@ namespace {
 
 using csp::AllDifferent;
 using test_problems::add;
+
+template <class T>
+std::vector<std::remove_const_t<T>> as_vector(std::span<T> items) {
+  return {items.begin(), items.end()};
+}
 
 std::unique_ptr<csp::AllDifferent> all_different(std::vector<csp::VariableId> scope,
                                                  std::vector<double> offsets = {},
@@ -87,9 +94,9 @@ TEST(PermutationGroups, AreFoundOnlyForHardZeroOffsetAllDifferentsOverExactlyThe
   p.add_constraint(all_different({a[0], a[1], a[2], a[3]}));  // a is taken already
   const auto groups = detail::find_permutation_groups(p);
   ASSERT_EQ(groups.size(), 2u);
-  EXPECT_EQ(groups[0].variables, a);
+  EXPECT_EQ(as_vector(groups[0].variables), a);
   EXPECT_EQ(groups[0].values, (std::vector<double>{1, 2, 3, 4}));
-  EXPECT_EQ(groups[1].variables, c);
+  EXPECT_EQ(as_vector(groups[1].variables), c);
   EXPECT_EQ(groups[1].values, (std::vector<double>{2, 5, 9}));
 }
 
@@ -106,15 +113,17 @@ TEST(PermutationGroups, PinTheVariablesThatHardUnaryConstraintsAllowOneValue) {
   ASSERT_EQ(groups.size(), 1u);
   using Pin = std::pair<csp::VariableId, double>;
   EXPECT_EQ(groups[0].pinned, (std::vector<Pin>{{a[3], 1.0}}));
-  EXPECT_EQ(groups[0].free, (std::vector<csp::VariableId>{a[0], a[1], a[2], a[4]}));
-  EXPECT_EQ(groups[0].free_values, (std::vector<double>{0, 2, 3, 4}));
+  EXPECT_EQ(as_vector(groups[0].free_variables()),
+            (std::vector<csp::VariableId>{a[0], a[1], a[2], a[4]}));
+  EXPECT_EQ(as_vector(groups[0].free_values()), (std::vector<double>{0, 2, 3, 4}));
 
   // Two variables pinned to the same value cannot both hold: no pins at all.
   hard(p, a[2], [](double x) { return x == 1; });
   groups = detail::find_permutation_groups(p);
   ASSERT_EQ(groups.size(), 1u);
   EXPECT_TRUE(groups[0].pinned.empty());
-  EXPECT_EQ(groups[0].free, a);
+  EXPECT_EQ(as_vector(groups[0].free_variables()), a);
+  EXPECT_EQ(as_vector(groups[0].free_values()), groups[0].values);
 }
 
 TEST(BestKeeper, ReconstructsTheBestFromItsUndoLogLikeAnExplicitCopy) {
@@ -143,6 +152,8 @@ TEST(BestKeeper, ReconstructsTheBestFromItsUndoLogLikeAnExplicitCopy) {
     }
     keeper.materialise(current);
     EXPECT_EQ(keeper.best(), expected) << "log limit " << log_limit;
+    EXPECT_EQ(keeper.take_best(), expected) << "log limit " << log_limit;
+    EXPECT_TRUE(keeper.best().empty());  // moved out, not copied
   }
 }
 

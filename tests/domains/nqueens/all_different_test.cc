@@ -41,6 +41,57 @@ TEST(AllDifferent, ComparesValuesPlusOffsets) {
   EXPECT_THROW(AllDifferent(ids(3), {0, 1}), std::invalid_argument);
 }
 
+// All-zero offsets are not stored (a million-variable alldifferent would keep 8 MB of
+// zeros): given as zeros (-0 included) or as none, offsets() is empty, offset(i) is 0, and
+// the violation, the bound and the dense and hashed incremental states agree with a count
+// of equal values made here; one non-zero offset keeps them all.
+TEST(AllDifferent, KeepsNoOffsetsWhenAllAreZeroAndScoresTheSame) {
+  std::mt19937 random(11);
+  const std::size_t n = 9;
+  Problem p("zeros");
+  p.add_variables("x", n, Domain::integer_range(0, 5));
+  for (const std::vector<double>& given :
+       {std::vector<double>{}, std::vector<double>(n, 0.0), std::vector<double>(n, -0.0)}) {
+    const auto range = key_range_from_domains(p, ids(n), given);
+    ASSERT_TRUE(range.has_value());
+    for (const bool dense : {true, false}) {
+      const AllDifferent c(ids(n), given, Measure::kDecomposition, 1.0, false,
+                           dense ? range : std::nullopt);
+      EXPECT_TRUE(c.offsets().empty());
+      EXPECT_TRUE(c.has_zero_offsets());
+      EXPECT_EQ(c.offset(n - 1), 0.0);
+      std::vector<double> values(n);
+      for (double& x : values) x = static_cast<double>(random() % 6);
+      auto pairs = [&](const std::vector<double>& v) {
+        double equal = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          for (std::size_t j = i + 1; j < n; ++j) equal += v[i] == v[j];
+        }
+        return equal;
+      };
+      EXPECT_EQ(c.violation(values), pairs(values));
+      EXPECT_EQ(c.min_violation(values, std::vector<std::uint8_t>(n, 1)), pairs(values));
+      const auto state = c.make_incremental_state(values);
+      for (int step = 0; step < 50; ++step) {
+        const std::size_t i = random() % n;
+        const auto value = static_cast<double>(random() % 6);
+        std::vector<double> after = values;
+        after[i] = value;
+        ASSERT_EQ(state->delta(values, i, value), pairs(after) - pairs(values));
+        state->commit(values, i, value);
+        values = after;
+      }
+    }
+  }
+  std::vector<double> one(n, 0.0);
+  one[4] = 5;
+  const AllDifferent kept(ids(n), one);
+  ASSERT_EQ(kept.offsets().size(), n);
+  EXPECT_FALSE(kept.has_zero_offsets());
+  EXPECT_EQ(kept.offset(4), 5.0);
+  EXPECT_EQ(kept.offset(3), 0.0);
+}
+
 struct Case {
   const char* name;
   Measure measure;
@@ -108,9 +159,9 @@ TEST(AllDifferent, IncrementalStateAgreesWithFullEvaluationOnRandomMoves) {
       // Involvement: 0 without an equal key; var: (count-1)/count; dec: count-1 (pairs).
       const VariableId w = static_cast<VariableId>(random() % n);
       const auto& values = evaluator.values();
-      const double key = values[w] + constraint.offsets()[w];
+      const double key = values[w] + constraint.offset(w);
       double count = 0;
-      for (VariableId u = 0; u < n; ++u) count += values[u] + constraint.offsets()[u] == key;
+      for (VariableId u = 0; u < n; ++u) count += values[u] + constraint.offset(u) == key;
       const double share = count < 2                          ? 0
                            : c.measure == Measure::kVariables ? (count - 1) / count
                                                               : count - 1;
