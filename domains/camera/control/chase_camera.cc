@@ -48,6 +48,14 @@ ChaseCamera::ChaseCamera(const Scene& scene, const CameraProfile& profile,
     const bool sighted = id == ids.visible_fraction || id == ids.future_visible;
     (sighted ? sighted_ids_ : cheap_ids_).push_back(id);
   }
+  if (profile.anticipation.plan_seconds > 0) {
+    std::vector<csp::ConstraintId> framing;
+    for (csp::ConstraintId id : cheap_ids_) {
+      if (id != ids.frame_coherence) framing.push_back(id);
+    }
+    planner_.emplace(problem_, std::move(framing), options_.max_speed,
+                     options_.max_acceleration, profile.anticipation.plan_seconds);
+  }
   reset(scene.start_camera_position());
 }
 
@@ -56,6 +64,10 @@ ChaseCamera::~ChaseCamera() = default;
 void ChaseCamera::reset(const Eigen::Vector3d& position) {
   position_ = position;
   velocity_.setZero();
+  acceleration_.setZero();
+  followed_velocity_.setZero();
+  last_followed_ = position;
+  if (planner_) planner_->reset();
   set_filtered_target(position);
   since_cut_ = 1e9;
   stuck_for_ = 0;
@@ -117,6 +129,10 @@ Eigen::Vector3d ChaseCamera::smooth_step(const Eigen::Vector3d& target, double d
 void ChaseCamera::cut_to(const Eigen::Vector3d& p, CutReason reason) {
   position_ = p;
   velocity_.setZero();
+  acceleration_.setZero();
+  followed_velocity_.setZero();
+  last_followed_ = p;
+  if (planner_) planner_->reset();
   set_filtered_target(p);
   since_cut_ = 0;
   stuck_for_ = 0;
@@ -261,6 +277,10 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       filtered_target_[i] = keep * filtered_target_[i] + (1 - keep) * input;
     }
     const Eigen::Vector3d& followed = filtered_target_[stages - 1];
+    // The planner moves toward a target that moves: its velocity, low-passed like it.
+    followed_velocity_ = keep * followed_velocity_ + (1 - keep) * (followed - last_followed_) / dt;
+    last_followed_ = followed;
+    const Eigen::Vector3d last_velocity = velocity_;
     // Smooth motion if the step keeps the character visible and crosses no geometry; a
     // shorter step if only that does; otherwise stay, or cut if staying loses sight too.
     bool moved = false;
@@ -268,7 +288,18 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
     // With smooth_escape the shorter steps are among the escape's moves (priced there).
     const bool escapes = guard && policy.smooth_escape;
+    bool planned_move = false;
+    if (guard && planner_) {
+      const HorizonPlanner::State now{position_, velocity_, acceleration_};
+      if (const auto planned = planner_->plan(now, followed, followed_velocity_, look, dt)) {
+        position_ = planned->position;
+        velocity_ = planned->velocity;
+        acceleration_ = planned->acceleration;
+        moved = planned_move = true;
+      }
+    }
     for (double fraction : {1.0, 0.5, 0.25}) {
+      if (moved) break;
       if (escapes && fraction < 1) break;
       const Eigen::Vector3d next = position_ + fraction * (step - position_);
       if (!guard || (usable(next, look) && sees(position_, next))) {
@@ -302,6 +333,10 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         if (const auto close = close_in(look)) target = *close;
       }
       cut_to(target, CutReason::kVisibilityLost);
+    }
+    // The planner starts from the acceleration the camera really had (spring, escape, stop).
+    if (planner_ && !frame_.cut && !planned_move) {
+      acceleration_ = (velocity_ - last_velocity) / dt;
     }
   }
   // A move longer than smooth motion allows is a cut, and flagged as one.
