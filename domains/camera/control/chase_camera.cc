@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <cstdio>
+#include <cstdlib>
 
 #include "domains/camera/control/camera_solvers.h"
 
@@ -297,6 +299,7 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         acceleration_ = planned->acceleration;
         moved = planned_move = true;
       }
+      if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "JP %llu %d\n", (unsigned long long)frames_, planned_move ? planner_->last_choice() : -1);
     }
     for (double fraction : {1.0, 0.5, 0.25}) {
       if (moved) break;
@@ -337,6 +340,8 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     // The planner starts from the acceleration the camera really had (spring, escape, stop).
     if (planner_ && !frame_.cut && !planned_move) {
       acceleration_ = (velocity_ - last_velocity) / dt;
+      const double a = acceleration_.norm();
+      if (a > options_.max_acceleration) acceleration_ *= options_.max_acceleration / a;
     }
   }
   // A move longer than smooth motion allows is a cut, and flagged as one.

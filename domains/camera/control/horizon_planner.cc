@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <cstdio>
+#include <cstdlib>
 
 namespace sightline::camera {
 
@@ -143,13 +145,31 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
     // The first frame must be a smooth, usable move.
     const Eigen::Vector3d first = q.position(dt);
-    if ((first - now.position).norm() > reach) continue;
-    if (geometry_now.clearance(first, radius + 1e-6) < radius) continue;
-    if (!geometry_now.line_of_sight(first, look)) continue;
-    if (!geometry_now.line_of_sight(now.position, first)) continue;
+    if ((first - now.position).norm() > reach) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d reach\n", i); continue;}
+    if (geometry_now.clearance(first, radius + 1e-6) < radius) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d clear\n", i); continue;}
+    if (!geometry_now.line_of_sight(first, look)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d sight\n", i); continue;}
+    if (!geometry_now.line_of_sight(now.position, first)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d cross\n", i); continue;}
     // Sight and room along the rest, at the prediction's times, cheapest-first cut-off.
     double cost = cheap[u];
     Eigen::Vector3d previous = first;
+    // Room over the next few frames, where the camera's momentum decides: a trajectory
+    // that runs into a wall there leaves next frame's plans no usable first frame.
+    // And sight there, of the look-at point on its way to the first predicted one (a
+    // sight line the character's next steps will cut is lost before any frame can react).
+    for (int m : {2, 4, 8}) {
+      const double t = m * dt;
+      const Eigen::Vector3d x = q.position(t);
+      if (geometry_now.clearance(x, radius + 1e-6) < radius ||
+          !geometry_now.line_of_sight(previous, x)) {
+        cost += kBlockedPrice;
+      }
+      if (prediction.size() > 0 && t < prediction.sample(0).ahead) {
+        const double u = t / prediction.sample(0).ahead;
+        const Eigen::Vector3d soon = (1 - u) * look + u * prediction.sample(0).look_at;
+        if (!geometry_now.line_of_sight(x, soon)) cost += kBlockedPrice;
+      }
+      previous = x;
+    }
     for (int k = 0; k < prediction.size() && cost < best_cost; ++k) {
       const MotionPrediction::Sample& s = prediction.sample(k);
       const SceneAtTime& g = prediction.geometry(k);

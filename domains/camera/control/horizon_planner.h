@@ -25,6 +25,9 @@
 //             time (the same points, weights and SceneAtTime that camera.future_visible
 //             reads), with the samples where x(ahead_k) is inside clearance or the path
 //             from the previous sample crosses geometry counted hidden twice;
+//   room      kBlockedPrice for each of the positions 2, 4 and 8 frames ahead that is
+//             inside clearance or reached through geometry (momentum: within a few
+//             frames every candidate goes nearly the same way, so walls must be seen early);
 //   jerk      kJerkPrice per m/s^3 of |x'''| over the first frame (what the jerk metric sees);
 //   switch    kSwitchPrice per metre between this goal's offset and the previous choice's.
 // A candidate is usable only if its first frame is a smooth move (<= max_speed x dt) to a
@@ -53,6 +56,10 @@ class HorizonPlanner {
   static constexpr double kJerkPrice = 1e-3;
   // Cost per metre of change of the chosen offset from one frame to the next.
   static constexpr double kSwitchPrice = 0.05;
+  // Cost of each of the next few frames (2, 4 and 8 frames ahead) where the trajectory
+  // enters clearance or crosses geometry: more than losing every predicted point (which
+  // costs anticipation.weight, 3 in the preset), as the camera cannot turn in a frame.
+  static constexpr double kBlockedPrice = 10.0;
 
   struct State {
     Eigen::Vector3d position, velocity, acceleration;
