@@ -45,6 +45,33 @@ struct Quintic {
   }
 };
 
+// A first frame that grazes a wall (inside clearance by at most kMaxSlide) slides along it:
+// pushed out along the wall's normal (the clearance's gradient, by central differences),
+// its velocity into the wall removed. A few millimetres of push cost far less jerk than any
+// other way out once momentum has brought the camera there. False when it cannot.
+bool slide_out(const SceneAtTime& geometry, double radius, Eigen::Vector3d* p,
+               Eigen::Vector3d* velocity) {
+  constexpr double kMaxSlide = 0.02, kStep = 0.01, kMargin = 1e-4;
+  const double probe = radius + kStep + kMaxSlide;
+  const double c = geometry.clearance(*p, probe);
+  if (c >= radius) return true;
+  if (c < radius - kMaxSlide) return false;
+  Eigen::Vector3d normal;
+  for (int i = 0; i < 3; ++i) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[i] = kStep;
+    normal[i] = geometry.clearance(*p + e, probe) - geometry.clearance(*p - e, probe);
+  }
+  if (normal.norm() < 1e-12) return false;
+  normal.normalize();
+  const Eigen::Vector3d pushed = *p + (radius - c + kMargin) * normal;
+  if (geometry.clearance(pushed, probe) < radius) return false;
+  *p = pushed;
+  const double into = velocity->dot(normal);
+  if (into < 0) *velocity -= into * normal;
+  return true;
+}
+
 }  // namespace
 
 HorizonPlanner::HorizonPlanner(const CameraProblem& problem,
@@ -110,7 +137,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     order[static_cast<std::size_t>(i)] = i;
     const auto u = static_cast<std::size_t>(i);
     // A duplicate of the target (previous choice was the target itself) is skipped.
-    if (i == 1 && previous_offset_.squaredNorm() < 1e-12) {
+    if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kStop && std::getenv("JPLAN_NOSTOP"))) {
       cheap[u] = std::numeric_limits<double>::infinity();
       continue;
     }
@@ -144,9 +171,11 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     if (!(cheap[u] < best_cost)) break;  // sorted: nothing after can win either
     const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
     // The first frame must be a smooth, usable move.
-    const Eigen::Vector3d first = q.position(dt);
+    Eigen::Vector3d first = q.position(dt);
+    Eigen::Vector3d first_velocity = q.velocity(dt);
     if ((first - now.position).norm() > reach) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d reach\n", i); continue;}
-    if (geometry_now.clearance(first, radius + 1e-6) < radius) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d clear\n", i); continue;}
+    if (!slide_out(geometry_now, radius, &first, &first_velocity) ||
+        (first - now.position).norm() > reach) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d clear\n", i); continue;}
     if (!geometry_now.line_of_sight(first, look)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d sight\n", i); continue;}
     if (!geometry_now.line_of_sight(now.position, first)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d cross\n", i); continue;}
     // Sight and room along the rest, at the prediction's times, cheapest-first cut-off.
@@ -181,7 +210,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     }
     if (cost < best_cost) {
       best_cost = cost;
-      best = State{first, q.velocity(dt), q.acceleration(dt)};
+      best = State{first, first_velocity, q.acceleration(dt)};
       last_choice_ = i;
     }
   }
