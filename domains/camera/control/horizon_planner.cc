@@ -216,7 +216,8 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   }
   if (best) {
     if (last_choice_ == kStop) {
-      previous_offset_.setZero();
+      // Kept as where the stop was heading, so leaving it is priced like any switch.
+      previous_offset_ = goal_of(kStop, 0) - target;
     } else {
       previous_offset_ = offsets[static_cast<std::size_t>(last_choice_)];
     }
