@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
 
 #include "domains/camera/control/camera_solvers.h"
 
@@ -299,7 +297,6 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         acceleration_ = planned->acceleration;
         moved = planned_move = true;
       }
-      if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "JP %llu %d\n", (unsigned long long)frames_, planned_move ? planner_->last_choice() : -1);
     }
     for (double fraction : {1.0, 0.5, 0.25}) {
       if (moved) break;

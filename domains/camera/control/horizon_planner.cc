@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <span>
-#include <cstdio>
-#include <cstdlib>
 
 namespace sightline::camera {
 
@@ -137,7 +135,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     order[static_cast<std::size_t>(i)] = i;
     const auto u = static_cast<std::size_t>(i);
     // A duplicate of the target (previous choice was the target itself) is skipped.
-    if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kStop && std::getenv("JPLAN_NOSTOP"))) {
+    if (i == 1 && previous_offset_.squaredNorm() < 1e-12) {
       cheap[u] = std::numeric_limits<double>::infinity();
       continue;
     }
@@ -173,11 +171,11 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     // The first frame must be a smooth, usable move.
     Eigen::Vector3d first = q.position(dt);
     Eigen::Vector3d first_velocity = q.velocity(dt);
-    if ((first - now.position).norm() > reach) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d reach\n", i); continue;}
+    if ((first - now.position).norm() > reach) continue;
     if (!slide_out(geometry_now, radius, &first, &first_velocity) ||
-        (first - now.position).norm() > reach) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d clear\n", i); continue;}
-    if (!geometry_now.line_of_sight(first, look)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d sight\n", i); continue;}
-    if (!geometry_now.line_of_sight(now.position, first)) { if (std::getenv("JPLAN_DEBUG")) std::fprintf(stderr, "R %d cross\n", i); continue;}
+        (first - now.position).norm() > reach) continue;
+    if (!geometry_now.line_of_sight(first, look)) continue;
+    if (!geometry_now.line_of_sight(now.position, first)) continue;
     // Sight and room along the rest, at the prediction's times, cheapest-first cut-off.
     double cost = cheap[u];
     Eigen::Vector3d previous = first;

@@ -15,7 +15,8 @@
 //          offsets around it in the view's frame: up 1 m and 2 m, pulled in toward the
 //          look-at point by 35% and 65% (the latter also 0.5 m up), 1.5 m to either side,
 //          up 1 m and 1.5 m to either side; the previous frame's chosen offset (so a choice
-//          is kept while it stays good); and a smooth stop (come to rest ahead).
+//          is kept while it stays good); and a smooth stop (come to rest ahead). A goal
+//          moves with the target: the quintic ends where the target will be at T.
 //   T = max(plan_seconds, the time a minimum-jerk move of that length needs to stay under
 //          max_speed and max_acceleration): a physical bound, not a scene constant.
 // Each is priced:
@@ -32,6 +33,10 @@
 //   switch    kSwitchPrice per metre between this goal's offset and the previous choice's.
 // A candidate is usable only if its first frame is a smooth move (<= max_speed x dt) to a
 // spot clear of geometry that sees the look-at point, along a segment that crosses nothing.
+// A first frame that grazes a wall (at most 2 cm inside clearance) is pushed out along the
+// wall's normal and loses its velocity into the wall: sliding along a wall costs a few
+// millimetres of jerk, where any other way out once momentum has brought the camera there
+// is a velocity jump.
 // The cheapest usable candidate's first frame is returned; the rest is thrown away and the
 // plan is made again next frame. Candidates are priced cheapest-first on the terms without
 // queries, so most frames ask the geometry for one or two trajectories only.
