@@ -311,7 +311,31 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     }
     const std::optional<Eigen::Vector3d> escape =
         !moved && escapes ? smooth_escape(look, step, dt) : std::nullopt;
-    if (moved) {
+    if (planned_move) {
+      // A planned move always exists while some trajectory is usable, so "blocked" is not
+      // what strands this camera: being left behind is. It makes no progress while it is
+      // farther from the ideal position than the solver can see (the search cube's
+      // half-size) and not getting nearer; past the patience below, if the policy allows,
+      // it cuts to a new shot searched around the ideal position. Only when the ideal
+      // position itself is usable: with the ideal inside a wall (the character backed up
+      // to it) the camera is where it can be, not left behind.
+      const Eigen::Vector3d ideal = problem_.ideal_position();
+      const double off = (position_ - ideal).norm();
+      const bool progress = off <= problem_.profile().search_half_size ||
+                            off < last_off_ideal_ || !usable(ideal, look);
+      last_off_ideal_ = off;
+      stuck_for_ = progress ? 0 : stuck_for_ + dt;
+      // Left behind for longer than the plan looks ahead: no plan will bring it back.
+      const double patience =
+          std::max(options_.stuck_seconds, problem_.profile().anticipation.horizon);
+      if (policy.stuck && stuck_for_ >= patience && may_cut) {
+        const Eigen::Vector3d shot = solve_for_new_shot(character, dt, look);
+        if (usable(shot, look) && (shot - position_).norm() > max_step(dt)) {
+          target = shot;
+          cut_to(shot, CutReason::kStuck);
+        }
+      }
+    } else if (moved) {
       stuck_for_ = 0;
     } else if (escape) {
       velocity_ = (*escape - position_) / dt;
@@ -335,6 +359,7 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       cut_to(target, CutReason::kVisibilityLost);
     }
     // The planner starts from the acceleration the camera really had (spring, escape, stop).
+    if (!planned_move) last_off_ideal_ = std::numeric_limits<double>::infinity();
     if (planner_ && !frame_.cut && !planned_move) {
       acceleration_ = (velocity_ - last_velocity) / dt;
       const double a = acceleration_.norm();

@@ -28,7 +28,10 @@
 //   motion planned over the prediction horizon (horizon_planner.h): each frame the camera
 //   follows the first frame of the cheapest smooth trajectory toward the low-passed target
 //   or an offset around it; the escape, staying and the cuts above are used only when no
-//   planned trajectory's first frame is usable.
+//   planned trajectory's first frame is usable. Its stuck cut (cuts.stuck) comes when the
+//   camera has been left behind: farther from the ideal position than the search cube's
+//   half-size and getting no nearer for stuck_seconds or the horizon, whichever is
+//   longer (a wall between it and the shot, that no plan over the horizon gets round).
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -138,6 +141,8 @@ class ChaseCamera : public CameraController {
   void set_filtered_target(const Eigen::Vector3d& p) { filtered_target_.fill(p); }
   double since_cut_ = 1e9;  // seconds since the last cut
   double stuck_for_ = 0;    // seconds the smooth move has been blocked
+  // With the planner: the camera's distance from the ideal position last frame.
+  double last_off_ideal_ = 1e9;
   bool was_backed_up_ = false;
   std::uint64_t frames_ = 0;
   CameraFrame frame_;
