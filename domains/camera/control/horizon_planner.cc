@@ -191,8 +191,8 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
         cost += kBlockedPrice;
       }
       if (prediction.size() > 0 && t < prediction.sample(0).ahead) {
-        const double u = t / prediction.sample(0).ahead;
-        const Eigen::Vector3d soon = (1 - u) * look + u * prediction.sample(0).look_at;
+        const double w = t / prediction.sample(0).ahead;
+        const Eigen::Vector3d soon = (1 - w) * look + w * prediction.sample(0).look_at;
         if (!geometry_now.line_of_sight(x, soon)) cost += kBlockedPrice;
       }
       previous = x;
