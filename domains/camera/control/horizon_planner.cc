@@ -202,7 +202,10 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       const SceneAtTime& g = prediction.geometry(k);
       const Eigen::Vector3d x = q.position(std::max(s.ahead, dt));
       double hidden = g.line_of_sight(x, s.look_at) ? 0.0 : 1.0;
-      if (g.clearance(x, radius + 1e-6) < radius || !g.line_of_sight(previous, x)) hidden += 1;
+      if (g.clearance(x, radius + 1e-6) < radius || !g.line_of_sight(previous, x)) {
+        hidden += 1;
+        cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
+      }
       cost += sight_weight * s.weight * hidden;
       previous = x;
     }

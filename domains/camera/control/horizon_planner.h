@@ -25,7 +25,8 @@
 //             (MotionPrediction's samples) hidden from x(ahead_k) in the geometry at that
 //             time (the same points, weights and SceneAtTime that camera.future_visible
 //             reads), with the samples where x(ahead_k) is inside clearance or the path
-//             from the previous sample crosses geometry counted hidden twice;
+//             from the previous sample crosses geometry counted hidden twice, and priced
+//             kBlockedPrice x w_k besides (running into geometry is no guess);
 //   room      kBlockedPrice for each of the positions 2, 4 and 8 frames ahead that is
 //             inside clearance or reached through geometry (momentum: within a few
 //             frames every candidate goes nearly the same way, so walls must be seen early);
