@@ -142,5 +142,33 @@ TEST(HorizonPlanner, FirstFramesStayClearOfAWallAndKeepTheLookAtPointInSight) {
   EXPECT_GT(planned, 200);
 }
 
+TEST(HorizonPlanner, BrakesBeforeASideWallItIsMovingAt) {
+  // The camera moves sideways at 3 m/s toward a wall 0.6 m away (0.4 m of room with its
+  // clearance radius; braking at max_acceleration takes 0.3 m): no first frame may enter the
+  // wall's clearance or cross it. Judged with the test's own box distance.
+  const Vector3d lo(1.0, 0, -8), hi(1.2, 3, 2);
+  std::vector<SolidBox> solids = {{"side", {lo, hi}, {}}};
+  Scene scene("side", std::move(solids), {}, {},
+              Trajectory({{0, {0, 0, 0}, 0}, {10, {0, 0, 0}, 0}}));
+  CameraProblem cp(scene, preset_profile("anticipating"));
+  HorizonPlanner planner(cp, framing_ids(cp), 8.0, 15.0, 0.75);
+  const double dt = 1.0 / 60;
+  const double r = cp.profile().clearance_radius;
+  const CharacterState s = scene.character_at(0);
+  const Vector3d look = scene.character().look_at(s.position);
+  HorizonPlanner::State state{{0.4, 2.5, -4}, {3, 0, 0}, Vector3d::Zero()};
+  int planned = 0;
+  for (int frame = 0; frame < 120; ++frame) {
+    cp.set_frame(s, state.position, dt);
+    const auto next = planner.plan(state, cp.ideal_position(), Vector3d::Zero(), look, dt);
+    if (!next) break;  // the controller's fallbacks take over
+    ++planned;
+    EXPECT_GE(distance_to_box(next->position, lo, hi), r - 1e-9) << "frame " << frame;
+    EXPECT_FALSE(segment_meets_box(state.position, next->position, lo, hi)) << "frame " << frame;
+    state = *next;
+  }
+  EXPECT_EQ(planned, 120);  // it brakes in time, so every frame has a plan
+}
+
 }  // namespace
 }  // namespace sightline::camera
