@@ -358,7 +358,8 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       }
       cut_to(target, CutReason::kVisibilityLost);
     }
-    // The planner starts from the acceleration the camera really had (spring, escape, stop).
+    // A frame without a plan restarts the left-behind measure; the planner starts from the
+    // acceleration the camera really had (spring, escape, stop).
     if (!planned_move) last_off_ideal_ = std::numeric_limits<double>::infinity();
     if (planner_ && !frame_.cut && !planned_move) {
       acceleration_ = (velocity_ - last_velocity) / dt;
