@@ -85,6 +85,9 @@ std::string CameraProfile::validate() const {
   }
   if (!finite_non_negative(a.weight)) return "anticipation.weight must be >= 0";
   if (!positive(a.decay)) return "anticipation.decay must be > 0 seconds";
+  if (!std::isfinite(a.plan_seconds) || a.plan_seconds < 0 || a.plan_seconds > 5) {
+    return "anticipation.plan_seconds must be in [0, 5] seconds";
+  }
   return "";
 }
 

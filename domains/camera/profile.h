@@ -84,6 +84,12 @@ struct Anticipation {
   int samples = 5;       // 1 .. kMaxSamples
   double weight = 3.0;   // cost when every predicted point is hidden
   double decay = 0.6;    // seconds: time constant of the weights, > 0
+  // > 0: the camera's motion is planned over the horizon (control/horizon_planner.h): each
+  // frame it follows the first frame of the cheapest of a fixed set of minimum-jerk
+  // trajectories at least this many seconds long, priced on the predicted points' sight
+  // along them, room, framing at their end and jerk. 0 (thesis-default): the spring toward
+  // the target, with cuts.smooth_escape's one-frame escapes if set. In [0, 5].
+  double plan_seconds = 0;
 
   bool operator==(const Anticipation&) const = default;
 };

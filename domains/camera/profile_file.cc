@@ -140,7 +140,7 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     }
   }
   if (const Spec* block = spec.find("anticipation")) {
-    block->check_keys({"lookahead", "horizon", "samples", "weight", "decay"});
+    block->check_keys({"lookahead", "horizon", "samples", "weight", "decay", "plan_seconds"});
     Anticipation& a = p.anticipation;
     if (const Spec* v = block->find("lookahead")) {
       const std::string& text = v->as_string("a lookahead mode: none, motion or path");
@@ -159,6 +159,9 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     }
     if (const Spec* v = block->find("weight")) a.weight = read_non_negative(*v, "anticipation.weight");
     if (const Spec* v = block->find("decay")) a.decay = read_positive(*v, "anticipation.decay (seconds)");
+    if (const Spec* v = block->find("plan_seconds")) {
+      a.plan_seconds = read_in_range(*v, "anticipation.plan_seconds (seconds, 0 = off)", 0, 5);
+    }
   }
   if (const Spec* block = spec.find("cuts")) {
     block->check_keys({"leave_enclosed", "backing_up", "stuck", "smooth_escape"});

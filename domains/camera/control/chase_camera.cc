@@ -48,6 +48,14 @@ ChaseCamera::ChaseCamera(const Scene& scene, const CameraProfile& profile,
     const bool sighted = id == ids.visible_fraction || id == ids.future_visible;
     (sighted ? sighted_ids_ : cheap_ids_).push_back(id);
   }
+  if (profile.anticipation.plan_seconds > 0) {
+    std::vector<csp::ConstraintId> framing;
+    for (csp::ConstraintId id : cheap_ids_) {
+      if (id != ids.frame_coherence) framing.push_back(id);
+    }
+    planner_.emplace(problem_, std::move(framing), options_.max_speed,
+                     options_.max_acceleration, profile.anticipation.plan_seconds);
+  }
   reset(scene.start_camera_position());
 }
 
@@ -56,6 +64,10 @@ ChaseCamera::~ChaseCamera() = default;
 void ChaseCamera::reset(const Eigen::Vector3d& position) {
   position_ = position;
   velocity_.setZero();
+  acceleration_.setZero();
+  followed_velocity_.setZero();
+  last_followed_ = position;
+  if (planner_) planner_->reset();
   set_filtered_target(position);
   since_cut_ = 1e9;
   stuck_for_ = 0;
@@ -117,6 +129,10 @@ Eigen::Vector3d ChaseCamera::smooth_step(const Eigen::Vector3d& target, double d
 void ChaseCamera::cut_to(const Eigen::Vector3d& p, CutReason reason) {
   position_ = p;
   velocity_.setZero();
+  acceleration_.setZero();
+  followed_velocity_.setZero();
+  last_followed_ = p;
+  if (planner_) planner_->reset();
   set_filtered_target(p);
   since_cut_ = 0;
   stuck_for_ = 0;
@@ -261,6 +277,10 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       filtered_target_[i] = keep * filtered_target_[i] + (1 - keep) * input;
     }
     const Eigen::Vector3d& followed = filtered_target_[stages - 1];
+    // The planner moves toward a target that moves: its velocity, low-passed like it.
+    followed_velocity_ = keep * followed_velocity_ + (1 - keep) * (followed - last_followed_) / dt;
+    last_followed_ = followed;
+    const Eigen::Vector3d last_velocity = velocity_;
     // Smooth motion if the step keeps the character visible and crosses no geometry; a
     // shorter step if only that does; otherwise stay, or cut if staying loses sight too.
     bool moved = false;
@@ -268,7 +288,18 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
     // With smooth_escape the shorter steps are among the escape's moves (priced there).
     const bool escapes = guard && policy.smooth_escape;
+    bool planned_move = false;
+    if (guard && planner_) {
+      const HorizonPlanner::State now{position_, velocity_, acceleration_};
+      if (const auto planned = planner_->plan(now, followed, followed_velocity_, look, dt)) {
+        position_ = planned->position;
+        velocity_ = planned->velocity;
+        acceleration_ = planned->acceleration;
+        moved = planned_move = true;
+      }
+    }
     for (double fraction : {1.0, 0.5, 0.25}) {
+      if (moved) break;
       if (escapes && fraction < 1) break;
       const Eigen::Vector3d next = position_ + fraction * (step - position_);
       if (!guard || (usable(next, look) && sees(position_, next))) {
@@ -280,7 +311,31 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     }
     const std::optional<Eigen::Vector3d> escape =
         !moved && escapes ? smooth_escape(look, step, dt) : std::nullopt;
-    if (moved) {
+    if (planned_move) {
+      // A planned move always exists while some trajectory is usable, so "blocked" is not
+      // what strands this camera: being left behind is. It makes no progress while it is
+      // farther from the ideal position than the solver can see (the search cube's
+      // half-size) and not getting nearer; past the patience below, if the policy allows,
+      // it cuts to a new shot searched around the ideal position. Only when the ideal
+      // position itself is usable: with the ideal inside a wall (the character backed up
+      // to it) the camera is where it can be, not left behind.
+      const Eigen::Vector3d ideal = problem_.ideal_position();
+      const double off = (position_ - ideal).norm();
+      const bool progress = off <= problem_.profile().search_half_size ||
+                            off < last_off_ideal_ || !usable(ideal, look);
+      last_off_ideal_ = off;
+      stuck_for_ = progress ? 0 : stuck_for_ + dt;
+      // Left behind for longer than the plan looks ahead: no plan will bring it back.
+      const double patience =
+          std::max(options_.stuck_seconds, problem_.profile().anticipation.horizon);
+      if (policy.stuck && stuck_for_ >= patience && may_cut) {
+        const Eigen::Vector3d shot = solve_for_new_shot(character, dt, look);
+        if (usable(shot, look) && (shot - position_).norm() > max_step(dt)) {
+          target = shot;
+          cut_to(shot, CutReason::kStuck);
+        }
+      }
+    } else if (moved) {
       stuck_for_ = 0;
     } else if (escape) {
       velocity_ = (*escape - position_) / dt;
@@ -302,6 +357,14 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         if (const auto close = close_in(look)) target = *close;
       }
       cut_to(target, CutReason::kVisibilityLost);
+    }
+    // A frame without a plan restarts the left-behind measure; the planner starts from the
+    // acceleration the camera really had (spring, escape, stop).
+    if (!planned_move) last_off_ideal_ = std::numeric_limits<double>::infinity();
+    if (planner_ && !frame_.cut && !planned_move) {
+      acceleration_ = (velocity_ - last_velocity) / dt;
+      const double a = acceleration_.norm();
+      if (a > options_.max_acceleration) acceleration_ *= options_.max_acceleration / a;
     }
   }
   // A move longer than smooth motion allows is a cut, and flagged as one.

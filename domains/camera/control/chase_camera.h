@@ -24,6 +24,14 @@
 //   camera slides along the wall, rises or pulls in before it pops. If a forced cut has no
 //   usable target from the solver either, these profiles cut to the first usable spot on
 //   rings 1-3 m around the look-at point (close_in) rather than stay hidden.
+//   With anticipation.plan_seconds > 0 the spring and the one-frame escape give way to a
+//   motion planned over the prediction horizon (horizon_planner.h): each frame the camera
+//   follows the first frame of the cheapest smooth trajectory toward the low-passed target
+//   or an offset around it; the escape, staying and the cuts above are used only when no
+//   planned trajectory's first frame is usable. Its stuck cut (cuts.stuck) comes when the
+//   camera has been left behind: farther from the ideal position than the search cube's
+//   half-size and getting no nearer for stuck_seconds or the horizon, whichever is
+//   longer (a wall between it and the shot, that no plan over the horizon gets round).
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -41,6 +49,7 @@
 
 #include "domains/camera/camera_problem.h"
 #include "domains/camera/control/camera_controller.h"
+#include "domains/camera/control/horizon_planner.h"
 #include "domains/camera/scene.h"
 #include "solvers/registry.h"
 
@@ -121,11 +130,19 @@ class ChaseCamera : public CameraController {
   solvers::SolveContext context_;
   Eigen::Vector3d position_;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
+  // With anticipation.plan_seconds > 0: the camera's acceleration (the planner keeps it
+  // continuous), the planner, and the followed target's velocity (low-passed).
+  Eigen::Vector3d acceleration_ = Eigen::Vector3d::Zero();
+  std::optional<HorizonPlanner> planner_;
+  Eigen::Vector3d followed_velocity_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_followed_ = Eigen::Vector3d::Zero();
   // The low-pass stages' outputs; the last one in use is what the spring follows.
   std::array<Eigen::Vector3d, ChaseCameraOptions::kMaxSmoothingStages> filtered_target_{};
   void set_filtered_target(const Eigen::Vector3d& p) { filtered_target_.fill(p); }
   double since_cut_ = 1e9;  // seconds since the last cut
   double stuck_for_ = 0;    // seconds the smooth move has been blocked
+  // With the planner: the camera's distance from the ideal position last frame.
+  double last_off_ideal_ = 1e9;
   bool was_backed_up_ = false;
   std::uint64_t frames_ = 0;
   CameraFrame frame_;

@@ -215,6 +215,7 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   EXPECT_FALSE(anticipating.cuts.leave_enclosed);
   EXPECT_FALSE(anticipating.cuts.backing_up);
   EXPECT_TRUE(anticipating.cuts.smooth_escape);
+  EXPECT_GT(anticipating.anticipation.plan_seconds, 0);  // motion planned over the horizon
   CameraProblem cp(scene, anticipating);
   ASSERT_TRUE(cp.ids().future_visible.has_value());
   const csp::Constraint& c = cp.problem().constraint(*cp.ids().future_visible);
@@ -226,6 +227,7 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   // The thesis profiles keep their cuts and look no further than now.
   const CameraProfile thesis = preset_profile("thesis-default");
   EXPECT_EQ(thesis.anticipation.lookahead, Lookahead::kNone);
+  EXPECT_EQ(thesis.anticipation.plan_seconds, 0);
   EXPECT_EQ(thesis.cuts, CutPolicy{});
 }
 
@@ -290,13 +292,15 @@ CameraProfile parse(const std::string& text) {
 
 TEST(CameraProfile, ReadsTheAnticipationAndCutsBlocks) {
   const CameraProfile p = parse(
-      "anticipation: {lookahead: path, horizon: 1.5, samples: 6, weight: 4, decay: 0.8}\n"
+      "anticipation: {lookahead: path, horizon: 1.5, samples: 6, weight: 4, decay: 0.8,\n"
+      "               plan_seconds: 0.6}\n"
       "cuts: {leave_enclosed: false, backing_up: true, stuck: false, smooth_escape: true}\n");
   EXPECT_EQ(p.anticipation.lookahead, Lookahead::kPath);
   EXPECT_EQ(p.anticipation.horizon, 1.5);
   EXPECT_EQ(p.anticipation.samples, 6);
   EXPECT_EQ(p.anticipation.weight, 4);
   EXPECT_EQ(p.anticipation.decay, 0.8);
+  EXPECT_EQ(p.anticipation.plan_seconds, 0.6);
   EXPECT_FALSE(p.cuts.leave_enclosed);
   EXPECT_TRUE(p.cuts.backing_up);
   EXPECT_FALSE(p.cuts.stuck);
@@ -314,6 +318,9 @@ TEST(CameraProfile, BadAnticipationValuesNameTheLineAndWhatWasExpected) {
       {"name: x\nanticipation:\n  samples: 9\n", "anticipation.samples"},
       {"name: x\nanticipation:\n  horizon: -1\n", "anticipation.horizon"},
       {"name: x\nanticipation:\n  decay: 0\n", "anticipation.decay"},
+      {"name: x\nanticipation:\n  plan_seconds: -0.5\n", "profile.yaml:3"},
+      {"name: x\nanticipation:\n  plan_seconds: 6\n", "anticipation.plan_seconds"},
+      {"name: x\nanticipation:\n  plan_seconds: soon\n", "anticipation.plan_seconds"},
       {"name: x\nanticipation:\n  wieght: 1\n", "wieght"},
       {"name: x\ncuts:\n  stuck: maybe\n", ""},
   };

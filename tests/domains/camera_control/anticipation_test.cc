@@ -7,8 +7,10 @@
 // interpolated from the movers' keyframes in the test. Never the controller's flag. Every
 // move longer than max_speed x dt must carry the cut flag. Cuts are counted from the trace's
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
-// pooled over each family of scenes. Jerk p99 of the reactive and anticipating cameras is
-// printed per scene for the record (docs/CAMERA.md has the table).
+// pooled over each family of scenes; discretionary cuts (any reason but visibility-lost) at
+// or below 2 per minute of EACH scene. On each thesis scene the anticipating camera's jerk
+// p99 must not exceed the reactive camera's. Jerk p99 of both cameras is printed per scene
+// for the record (docs/CAMERA.md has the table).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -84,6 +86,9 @@ void mover_box_at(const camera::Mover& m, double t, Vector3d* lo, Vector3d* hi) 
 
 struct Judged {
   int frames = 0, hidden = 0, too_close = 0, unflagged = 0, cuts = 0;
+  // Cuts for any reason but "visibility-lost" (the forced last resort): stuck, leaving an
+  // area, backing up; counted from the trace's reasons.
+  int discretionary = 0;
   // Frames whose look-at point is inside a mover's box (a generated vehicle driving through
   // the character, which is not checked against movers): hidden from everywhere, so not
   // counted as hidden, and reported.
@@ -121,6 +126,7 @@ Judged judge(const Scene& scene, const camera::ChaseCameraOptions& options,
       ADD_FAILURE() << scene.name() << ": within clearance at t=" << row.t;
     }
     if (row.cut) ++j.cuts;
+    if (row.cut && row.cut_reason != "visibility-lost") ++j.discretionary;
     if (i > 0 && !row.cut && (row.camera - run.trace[i - 1].camera).norm() > max_step + 1e-9) {
       if (j.unflagged++ < 3) ADD_FAILURE() << scene.name() << ": unflagged jump at t=" << row.t;
     }
@@ -149,6 +155,14 @@ Judged run_anticipating(Scene& scene) {
     experiments::write_trace_csv(std::string(dir) + "/" + scene.name() + ".csv", run.trace);
   }
   return judge(scene, options, run);
+}
+
+// The issue's limit on discretionary cuts, per scene: at most 2 per minute OF THAT SCENE, so a
+// scene shorter than 30 s may have none (the count is whole: cuts <= 2 x minutes).
+void expect_few_discretionary_cuts(const Scene& scene, const Judged& a) {
+  EXPECT_LE(a.discretionary, 2.0 * a.seconds / 60.0)
+      << scene.name() << ": " << a.discretionary << " discretionary cuts in " << a.seconds
+      << " s";
 }
 
 // --- seeded generators --------------------------------------------------------------------
@@ -246,8 +260,12 @@ Scene crossings(std::uint64_t seed) {
 // --- the tests ------------------------------------------------------------------------------
 
 // Every scene file in `folder` (under experiments/scenes), reactive beside anticipating;
-// returns the anticipating camera's cuts per minute over all of them.
-double run_shipped(const std::string& folder) {
+// returns the anticipating camera's cuts per minute over all of them. With
+// `jerk_no_worse`, each scene's jerk p99 (experiments/metrics, differences spanning a cut
+// skipped, the same computation for both cameras) must not exceed the reactive camera's:
+// the issue's "jerk p99 no worse than today's on the thesis scenes", with no tolerance
+// (both runs are deterministic: same solver, same seed).
+double run_shipped(const std::string& folder, bool jerk_no_worse) {
   const auto files = experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) +
                                               "/experiments/scenes" + folder);
   EXPECT_FALSE(files.empty());
@@ -264,6 +282,10 @@ double run_shipped(const std::string& folder) {
     EXPECT_EQ(a.hidden, 0) << scene.name();
     EXPECT_EQ(a.too_close, 0) << scene.name();
     EXPECT_EQ(a.unflagged, 0) << scene.name();
+    expect_few_discretionary_cuts(scene, a);
+    if (jerk_no_worse) {
+      EXPECT_LE(a.jerk_p99, reactive_run.metrics.jerk_p99) << scene.name() << ": jerk p99";
+    }
     cuts += a.cuts;
     seconds += a.seconds;
     std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  "
@@ -278,13 +300,13 @@ double run_shipped(const std::string& folder) {
 }
 
 TEST(AnticipatingCamera, OnEveryThesisSceneKeepsTheLookAtVisibleClearAndCutsRarely) {
-  EXPECT_LE(run_shipped(""), 2.0);
+  EXPECT_LE(run_shipped("", /*jerk_no_worse=*/true), 2.0);
 }
 
 // The issue's scenes (experiments/scenes/anticipation/: switchback, colonnade, people
 // crossing, sliding door, traffic, courtyard, two rooms), movers included.
 TEST(AnticipatingCamera, OnTheIssuesMoverScenesKeepsTheLookAtVisibleClearAndCutsRarely) {
-  EXPECT_LE(run_shipped("/anticipation"), 2.0);
+  EXPECT_LE(run_shipped("/anticipation", /*jerk_no_worse=*/false), 2.0);
 }
 
 TEST(AnticipatingCamera, OnSeededSwitchbacksKeepsTheLookAtVisibleClearAndCutsRarely) {
@@ -297,6 +319,7 @@ TEST(AnticipatingCamera, OnSeededSwitchbacksKeepsTheLookAtVisibleClearAndCutsRar
     EXPECT_EQ(a.hidden, 0) << scene.name();
     EXPECT_EQ(a.too_close, 0) << scene.name();
     EXPECT_EQ(a.unflagged, 0) << scene.name();
+    expect_few_discretionary_cuts(scene, a);
     cuts += a.cuts;
     seconds += a.seconds;
     std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
@@ -319,6 +342,7 @@ TEST(AnticipatingCamera, OnSeededCrossingsKeepsTheLookAtVisibleClearAndCutsRarel
     EXPECT_EQ(a.hidden, 0) << scene.name();
     EXPECT_EQ(a.too_close, 0) << scene.name();
     EXPECT_EQ(a.unflagged, 0) << scene.name();
+    expect_few_discretionary_cuts(scene, a);
     cuts += a.cuts;
     seconds += a.seconds;
     std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
@@ -349,6 +373,7 @@ TEST(AnticipatingCamera, OnTheSharedGeneratorsScenesKeepsTheLookAtVisibleClearAn
       EXPECT_EQ(a.hidden, 0) << scene.name();
       EXPECT_EQ(a.too_close, 0) << scene.name();
       EXPECT_EQ(a.unflagged, 0) << scene.name();
+      expect_few_discretionary_cuts(scene, a);
       cuts += a.cuts;
       seconds += a.seconds;
       std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "

@@ -1,0 +1,229 @@
+#include "domains/camera/control/horizon_planner.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+
+namespace sightline::camera {
+
+namespace {
+
+// The minimum-jerk quintic from (p0, v0, a0) to (p1, v1, 0) in T seconds, per axis; after T
+// it goes on at v1 (the goal keeps moving).
+struct Quintic {
+  std::array<Eigen::Vector3d, 6> c;
+  Eigen::Vector3d end, end_velocity;
+  double duration = 1;
+
+  Quintic(const HorizonPlanner::State& s, const Eigen::Vector3d& p1, const Eigen::Vector3d& v1,
+          double T)
+      : end(p1), end_velocity(v1), duration(T) {
+    const Eigen::Vector3d h = p1 - s.position;
+    const double T2 = T * T, T3 = T2 * T;
+    c[0] = s.position;
+    c[1] = s.velocity;
+    c[2] = 0.5 * s.acceleration;
+    c[3] = (20 * h - (8 * v1 + 12 * s.velocity) * T - 3 * s.acceleration * T2) / (2 * T3);
+    c[4] = (-30 * h + (14 * v1 + 16 * s.velocity) * T + 3 * s.acceleration * T2) / (2 * T3 * T);
+    c[5] = (12 * h - 6 * (v1 + s.velocity) * T - s.acceleration * T2) / (2 * T3 * T2);
+  }
+  Eigen::Vector3d position(double t) const {
+    if (t >= duration) return end + (t - duration) * end_velocity;
+    return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+  }
+  Eigen::Vector3d velocity(double t) const {
+    if (t >= duration) return end_velocity;
+    return c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])));
+  }
+  Eigen::Vector3d acceleration(double t) const {
+    if (t >= duration) return Eigen::Vector3d::Zero();
+    return 2 * c[2] + t * (6 * c[3] + t * (12 * c[4] + t * 20 * c[5]));
+  }
+};
+
+// A first frame that grazes a wall (inside clearance by at most kMaxSlide) slides along it:
+// pushed out along the wall's normal (the clearance's gradient, by central differences),
+// its velocity into the wall removed. A few millimetres of push cost far less jerk than any
+// other way out once momentum has brought the camera there. False when it cannot.
+bool slide_out(const SceneAtTime& geometry, double radius, Eigen::Vector3d* p,
+               Eigen::Vector3d* velocity) {
+  constexpr double kMaxSlide = 0.02, kStep = 0.01, kMargin = 1e-4;
+  const double probe = radius + kStep + kMaxSlide;
+  const double c = geometry.clearance(*p, probe);
+  if (c >= radius) return true;
+  if (c < radius - kMaxSlide) return false;
+  Eigen::Vector3d normal;
+  for (int i = 0; i < 3; ++i) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[i] = kStep;
+    normal[i] = geometry.clearance(*p + e, probe) - geometry.clearance(*p - e, probe);
+  }
+  if (normal.norm() < 1e-12) return false;
+  normal.normalize();
+  const Eigen::Vector3d pushed = *p + (radius - c + kMargin) * normal;
+  if (geometry.clearance(pushed, probe) < radius) return false;
+  *p = pushed;
+  const double into = velocity->dot(normal);
+  if (into < 0) *velocity -= into * normal;
+  return true;
+}
+
+}  // namespace
+
+HorizonPlanner::HorizonPlanner(const CameraProblem& problem,
+                               std::vector<csp::ConstraintId> framing_ids, double max_speed,
+                               double max_acceleration, double plan_seconds)
+    : problem_(&problem),
+      framing_ids_(std::move(framing_ids)),
+      max_speed_(max_speed),
+      max_acceleration_(max_acceleration),
+      plan_seconds_(plan_seconds) {}
+
+std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
+                                                          const Eigen::Vector3d& target,
+                                                          const Eigen::Vector3d& target_velocity,
+                                                          const Eigen::Vector3d& look,
+                                                          double dt) {
+  // The view's frame at the target: toward the look-at point (horizontal), across, up.
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  Eigen::Vector3d toward = look - target;
+  toward.y() = 0;
+  const double reach_in = toward.norm();
+  toward = reach_in > 1e-9 ? Eigen::Vector3d(toward / reach_in) : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d side(toward.z(), 0, -toward.x());
+
+  // Offsets from the target (index kStop: the smooth stop, goal computed below).
+  constexpr int kStop = kCandidates - 1;
+  std::array<Eigen::Vector3d, kCandidates> offsets = {
+      Eigen::Vector3d::Zero(),
+      previous_offset_,
+      up,
+      2 * up,
+      0.35 * reach_in * toward,
+      0.65 * reach_in * toward + 0.5 * up,
+      1.5 * side,
+      -1.5 * side,
+      up + 1.5 * side,
+      up - 1.5 * side,
+      Eigen::Vector3d::Zero()};
+
+  // Where candidate i's goal is `ahead` seconds from now (the target keeps moving), and
+  // how fast it moves then; the smooth stop comes to rest ahead of the camera.
+  auto goal_of = [&](int i, double ahead) -> Eigen::Vector3d {
+    if (i == kStop) return now.position + 0.5 * plan_seconds_ * now.velocity;
+    return target + offsets[static_cast<std::size_t>(i)] + ahead * target_velocity;
+  };
+  auto velocity_of = [&](int i) -> Eigen::Vector3d {
+    return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
+  };
+  const csp::Problem& problem = problem_->problem();
+  const SceneAtTime& geometry_now = problem_->scene_at_time();
+  const MotionPrediction& prediction = problem_->prediction();
+  const double radius = problem_->profile().clearance_radius;
+  const double sight_weight =
+      prediction.size() > 0 ? problem_->profile().anticipation.weight / prediction.total_weight()
+                            : 0.0;
+  const double reach = max_speed_ * dt * (1 + 1e-9);
+
+  // Terms without queries, for every candidate.
+  std::array<double, kCandidates> cheap{};
+  std::array<int, kCandidates> order{};
+  std::array<double, kCandidates> durations{};
+  for (int i = 0; i < kCandidates; ++i) {
+    order[static_cast<std::size_t>(i)] = i;
+    const auto u = static_cast<std::size_t>(i);
+    // A duplicate of the target (previous choice was the target itself) is skipped.
+    if (i == 1 && previous_offset_.squaredNorm() < 1e-12) {
+      cheap[u] = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    const Eigen::Vector3d goal = goal_of(i, plan_seconds_);
+    // Long enough that a minimum-jerk move this long keeps under the speed and acceleration
+    // bounds (its peaks are 1.875 d / T and 5.77 d / T^2), with 10% to spare.
+    const double d = (goal - now.position).norm();
+    durations[u] = std::max({plan_seconds_, 1.875 * d / (0.9 * max_speed_),
+                             std::sqrt(5.77 * d / (0.9 * max_acceleration_))});
+    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+    const double jerk = (q.acceleration(dt) - now.acceleration).norm() / dt;
+    // Framing is priced where the goal is now, against this frame's character.
+    const Eigen::Vector3d here = goal_of(i, 0);
+    const double values[3] = {here.x(), here.y(), here.z()};
+    double framing = 0;
+    for (csp::ConstraintId id : framing_ids_) {
+      const csp::Constraint& c = problem.constraint(id);
+      if (!c.is_hard()) framing += c.weight() * c.violation(std::span<const double>(values, 3));
+    }
+    const Eigen::Vector3d offset = i == kStop ? Eigen::Vector3d(here - target) : offsets[u];
+    cheap[u] = framing + kJerkPrice * jerk + kSwitchPrice * (offset - previous_offset_).norm();
+  }
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return cheap[static_cast<std::size_t>(a)] < cheap[static_cast<std::size_t>(b)];
+  });
+
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::optional<State> best;
+  for (int i : order) {
+    const auto u = static_cast<std::size_t>(i);
+    if (!(cheap[u] < best_cost)) break;  // sorted: nothing after can win either
+    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+    // The first frame must be a smooth, usable move.
+    Eigen::Vector3d first = q.position(dt);
+    Eigen::Vector3d first_velocity = q.velocity(dt);
+    if ((first - now.position).norm() > reach) continue;
+    if (!slide_out(geometry_now, radius, &first, &first_velocity) ||
+        (first - now.position).norm() > reach) continue;
+    if (!geometry_now.line_of_sight(first, look)) continue;
+    if (!geometry_now.line_of_sight(now.position, first)) continue;
+    // Sight and room along the rest, at the prediction's times, cheapest-first cut-off.
+    double cost = cheap[u];
+    Eigen::Vector3d previous = first;
+    // Room over the next few frames, where the camera's momentum decides: a trajectory
+    // that runs into a wall there leaves next frame's plans no usable first frame.
+    // And sight there, of the look-at point on its way to the first predicted one (a
+    // sight line the character's next steps will cut is lost before any frame can react).
+    for (int m : {2, 4, 8}) {
+      const double t = m * dt;
+      const Eigen::Vector3d x = q.position(t);
+      if (geometry_now.clearance(x, radius + 1e-6) < radius ||
+          !geometry_now.line_of_sight(previous, x)) {
+        cost += kBlockedPrice;
+      }
+      if (prediction.size() > 0 && t < prediction.sample(0).ahead) {
+        const double w = t / prediction.sample(0).ahead;
+        const Eigen::Vector3d soon = (1 - w) * look + w * prediction.sample(0).look_at;
+        if (!geometry_now.line_of_sight(x, soon)) cost += kBlockedPrice;
+      }
+      previous = x;
+    }
+    for (int k = 0; k < prediction.size() && cost < best_cost; ++k) {
+      const MotionPrediction::Sample& s = prediction.sample(k);
+      const SceneAtTime& g = prediction.geometry(k);
+      const Eigen::Vector3d x = q.position(std::max(s.ahead, dt));
+      double hidden = g.line_of_sight(x, s.look_at) ? 0.0 : 1.0;
+      if (g.clearance(x, radius + 1e-6) < radius || !g.line_of_sight(previous, x)) {
+        hidden += 1;
+        cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
+      }
+      cost += sight_weight * s.weight * hidden;
+      previous = x;
+    }
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = State{first, first_velocity, q.acceleration(dt)};
+      last_choice_ = i;
+    }
+  }
+  if (best) {
+    if (last_choice_ == kStop) {
+      // Kept as where the stop was heading, so leaving it is priced like any switch.
+      previous_offset_ = goal_of(kStop, 0) - target;
+    } else {
+      previous_offset_ = offsets[static_cast<std::size_t>(last_choice_)];
+    }
+  }
+  return best;
+}
+
+}  // namespace sightline::camera

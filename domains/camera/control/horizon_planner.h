@@ -1,0 +1,97 @@
+// HorizonPlanner: the anticipating camera's motion, planned over the prediction horizon and
+// re-planned every frame (receding horizon, after Burg, Lino and Christie 2020, who move the
+// camera early along paths that keep the character's future positions visible).
+//
+// Why: a one-frame greedy move (the spring's step, or the best short escape around it) only
+// sees the next frame. It backs the camera into spots where every one-frame move is worse
+// than staying (a corner, under an overhang), so the camera freezes until a stuck cut, and
+// it switches direction from one frame to the next, which is jerk.
+//
+// Each frame, from the camera's state (position p0, velocity v0, acceleration a0), plan()
+// builds a fixed set of candidate trajectories, each a minimum-jerk quintic
+// x(t) that starts at (p0, v0, a0) (so acceleration is continuous) and ends at a goal
+// position with the goal's velocity and no acceleration, in T seconds:
+//   goals: the followed target (the spring's target, moving at its estimated velocity);
+//          offsets around it in the view's frame: up 1 m and 2 m, pulled in toward the
+//          look-at point by 35% and 65% (the latter also 0.5 m up), 1.5 m to either side,
+//          up 1 m and 1.5 m to either side; the previous frame's chosen offset (so a choice
+//          is kept while it stays good); and a smooth stop (come to rest ahead). A goal
+//          moves with the target: the quintic ends where the target will be at T.
+//   T = max(plan_seconds, the time a minimum-jerk move of that length needs to stay under
+//          max_speed and max_acceleration): a physical bound, not a scene constant.
+// Each is priced:
+//   framing   the profile's soft costs (height, distance, orientation, extras) at the goal;
+//   sight     anticipation.weight x the weighted fraction of the predicted look-at points
+//             (MotionPrediction's samples) hidden from x(ahead_k) in the geometry at that
+//             time (the same points, weights and SceneAtTime that camera.future_visible
+//             reads), with the samples where x(ahead_k) is inside clearance or the path
+//             from the previous sample crosses geometry counted hidden twice, and priced
+//             kBlockedPrice x w_k besides (running into geometry is no guess);
+//   room      kBlockedPrice for each of the positions 2, 4 and 8 frames ahead that is
+//             inside clearance or reached through geometry (momentum: within a few
+//             frames every candidate goes nearly the same way, so walls must be seen early);
+//   jerk      kJerkPrice per m/s^3 of |x'''| over the first frame (what the jerk metric sees);
+//   switch    kSwitchPrice per metre between this goal's offset and the previous choice's.
+// A candidate is usable only if its first frame is a smooth move (<= max_speed x dt) to a
+// spot clear of geometry that sees the look-at point, along a segment that crosses nothing.
+// A first frame that grazes a wall (at most 2 cm inside clearance) is pushed out along the
+// wall's normal and loses its velocity into the wall: sliding along a wall costs a few
+// millimetres of jerk, where any other way out once momentum has brought the camera there
+// is a velocity jump.
+// The cheapest usable candidate's first frame is returned; the rest is thrown away and the
+// plan is made again next frame. Candidates are priced cheapest-first on the terms without
+// queries, so most frames ask the geometry for one or two trajectories only.
+// No allocation per frame; the candidate set is fixed (kCandidates). Not thread-safe (it
+// remembers the previous choice); one planner per camera.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "csp/problem.h"
+#include "domains/camera/camera_problem.h"
+
+namespace sightline::camera {
+
+class HorizonPlanner {
+ public:
+  static constexpr int kCandidates = 11;
+  // Cost per m/s^3 of jerk over the first frame: 300 m/s^3 (about the reactive camera's
+  // p99) costs what 0.3 m off the desired distance costs.
+  static constexpr double kJerkPrice = 1e-3;
+  // Cost per metre of change of the chosen offset from one frame to the next.
+  static constexpr double kSwitchPrice = 0.05;
+  // Cost of each of the next few frames (2, 4 and 8 frames ahead) where the trajectory
+  // enters clearance or crosses geometry: more than losing every predicted point (which
+  // costs anticipation.weight, 3 in the preset), as the camera cannot turn in a frame.
+  static constexpr double kBlockedPrice = 10.0;
+
+  struct State {
+    Eigen::Vector3d position, velocity, acceleration;
+  };
+
+  // `problem` must outlive the planner. `framing_ids`: the soft constraints priced at a
+  // goal (no sight lines, no frame coherence).
+  HorizonPlanner(const CameraProblem& problem, std::vector<csp::ConstraintId> framing_ids,
+                 double max_speed, double max_acceleration, double plan_seconds);
+
+  // The state after one frame (dt seconds) along the cheapest usable candidate, or nothing
+  // when no candidate's first frame is usable. `target` moves at `target_velocity`.
+  std::optional<State> plan(const State& now, const Eigen::Vector3d& target,
+                            const Eigen::Vector3d& target_velocity, const Eigen::Vector3d& look,
+                            double dt);
+  // Forgets the previous choice (after a cut).
+  void reset() { previous_offset_.setZero(); }
+  // Index of the candidate chosen by the last successful plan() (0 = the target itself).
+  int last_choice() const { return last_choice_; }
+
+ private:
+  const CameraProblem* problem_;
+  std::vector<csp::ConstraintId> framing_ids_;
+  double max_speed_, max_acceleration_, plan_seconds_;
+  Eigen::Vector3d previous_offset_ = Eigen::Vector3d::Zero();
+  int last_choice_ = 0;
+};
+
+}  // namespace sightline::camera
