@@ -48,7 +48,9 @@
 // above is replaced by depth-first binary branching maintaining NC*, AC*, FDAC* or EDAC*
 // (solvers/detail/bnb_soft_arc.h, bnb_soft_search.h): a far stronger bound (c0 after cost
 // moves between constraints), value ordering by unary cost, dom/wdeg variable ordering
-// (last-conflict optional). Any other problem, or `consistency: none`, uses the
+// (last-conflict optional), no branching on a variable whose cost functions all have their
+// other variables fixed (it takes its cheapest value; not when counting optima). Any other
+// problem, or `consistency: none`, uses the
 // forward-checking search described above. docs/WCSP.md compares both with toulbar2.
 #pragma once
 

@@ -60,6 +60,7 @@ void SoftArcConsistency::load(const WcspView& view, Level level) {
   eac_queue_.clear();
   nc_queue_.clear();
   failed_ = false;
+  prune_all_ = false;
   stopped_ = false;
   last_edge_ = -1;
   // The first propagate() enforces the level everywhere.
@@ -88,10 +89,18 @@ void SoftArcConsistency::push_ac(std::uint32_t e, bool onto_x) {
   in_ac_[item] = 1;
   ac_queue_.push_back(item);
 }
+// The DAC queue is a binary heap on the edge's y (highest first), so a pop costs
+// O(log queue) instead of a scan of the queue: at the root every edge is queued, and
+// scanning thousands of edges per pop was most of the time on large instances.
+bool SoftArcConsistency::dac_before(std::uint32_t e, std::uint32_t f) const {
+  return view_->edges[e].y < view_->edges[f].y;
+}
 void SoftArcConsistency::push_dac(std::uint32_t e) {
   if (in_dac_[e]) return;
   in_dac_[e] = 1;
   dac_queue_.push_back(e);
+  std::push_heap(dac_queue_.begin(), dac_queue_.end(),
+                 [this](std::uint32_t a, std::uint32_t b) { return dac_before(a, b); });
 }
 void SoftArcConsistency::push_eac(csp::VariableId v) {
   if (in_eac_[v]) return;
@@ -218,32 +227,55 @@ bool SoftArcConsistency::node_consistency(csp::VariableId v) {
       failed_ = true;
       return false;
     }
-    for (csp::VariableId w = 0; w < size_.size() && !failed_; ++w) prune(w);
+    // Every variable may now have values that reach top with c0: they are pruned once the
+    // queues are empty (propagate), not here, where a propagation raising c0 many times
+    // would scan every domain each time. Keeping them a while longer is sound (pruning only
+    // strengthens) and the state is fully pruned when propagate() returns.
+    prune_all_ = true;
   }
   return prune(v);
+}
+
+void SoftArcConsistency::list_alive(csp::VariableId v, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const std::int64_t* alive = alive_.data() + view_->offset[v];
+  const std::uint32_t size = view_->size(v);
+  for (std::uint32_t b = 0; b < size && out.size() < static_cast<std::size_t>(size_[v]); ++b) {
+    if (alive[b]) out.push_back(b);
+  }
 }
 
 bool SoftArcConsistency::project_simple(std::uint32_t e, bool onto_x) {
   const WcspView::Edge& edge = view_->edges[e];
   const csp::VariableId s = onto_x ? edge.x : edge.y, o = onto_x ? edge.y : edge.x;
-  const std::uint32_t ds = view_->size(s), dn = view_->size(o);
+  const std::uint32_t ds = view_->size(s);
   const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
   bool moved = false;
   std::uint32_t* support = support_.data() + (onto_x ? delta_x_[e] : delta_y_[e]);
   const SidedPair pair = sided(e, onto_x);
   const std::int64_t* alive_s = alive_.data() + sb;
   const std::int64_t* alive_o = alive_.data() + ob;
+  // The alive values of the other side, listed once (when a row first needs a scan), so a
+  // row scan costs the alive count, not the domain size: deep in the search most domains
+  // are down to a few values (one, once assigned) out of tens.
+  std::vector<std::uint32_t>& alive_list = scratch_alive_;
+  alive_list.clear();
+  bool listed = false;
   for (std::uint32_t a = 0; a < ds; ++a) {
     if (!alive_s[a]) continue;
     const std::uint32_t hint = support[a];
     if (alive_o[hint] && pair.at(a, hint) == 0) continue;
+    if (!listed) {
+      list_alive(o, alive_list);
+      listed = true;
+    }
     std::int64_t least = kForbidden;
-    for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
-      if (!alive_o[b]) continue;
+    for (const std::uint32_t b : alive_list) {
       const std::int64_t c = pair.at(a, b);
       if (c < least) {
         least = c;
         support[a] = b;
+        if (c == 0) break;
       }
     }
     if (least == 0) continue;
@@ -267,7 +299,7 @@ bool SoftArcConsistency::project_simple(std::uint32_t e, bool onto_x) {
 bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   const WcspView::Edge& edge = view_->edges[e];
   const csp::VariableId s = onto_x ? edge.x : edge.y, o = onto_x ? edge.y : edge.x;
-  const std::uint32_t ds = view_->size(s), dn = view_->size(o);
+  const std::uint32_t ds = view_->size(s);
   const std::uint32_t sb = view_->offset[s], ob = view_->offset[o];
   const SidedPair pair = sided(e, onto_x);
   auto pair_cost = [&pair](std::uint32_t a, std::uint32_t b) { return pair.at(a, b); };
@@ -275,17 +307,19 @@ bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   scratch_alpha_.assign(ds, 0);
   bool lacking = false;
   std::uint32_t* support = full_support_.data() + (onto_x ? delta_x_[e] : delta_y_[e]);
+  std::vector<std::uint32_t>& alive_list = scratch_alive_;
+  list_alive(o, alive_list);  // as in project_simple
   for (std::uint32_t a = 0; a < ds; ++a) {
     if (!alive_[sb + a]) continue;
     const std::uint32_t hint = support[a];
     if (alive_[ob + hint] && pair_cost(a, hint) == 0 && unary_[ob + hint] == 0) continue;
     std::int64_t least = kForbidden;
-    for (std::uint32_t b = 0; b < dn && least > 0; ++b) {
-      if (!alive_[ob + b]) continue;
+    for (const std::uint32_t b : alive_list) {
       const std::int64_t c = add_cost(pair_cost(a, b), unary_[ob + b]);
       if (c < least) {
         least = c;
         support[a] = b;
+        if (c == 0) break;
       }
     }
     scratch_alpha_[a] = least;
@@ -294,9 +328,7 @@ bool SoftArcConsistency::project_full(std::uint32_t e, bool onto_x) {
   if (!lacking) return false;
   // Extension: P(b) = max over a of alpha[a] - C(a, b) (at most C_o(b), since alpha[a] <=
   // C(a, b) + C_o(b)) moves from C_o(b) into column b, so every row a can then give alpha[a].
-  scratch_extend_.assign(dn, 0);
-  for (std::uint32_t b = 0; b < dn; ++b) {
-    if (!alive_[ob + b]) continue;
+  for (const std::uint32_t b : alive_list) {
     std::int64_t need = 0;
     for (std::uint32_t a = 0; a < ds; ++a) {
       if (!alive_[sb + a] || scratch_alpha_[a] == 0 || scratch_alpha_[a] >= kForbidden) continue;
@@ -419,12 +451,9 @@ bool SoftArcConsistency::propagate() {
       revise_side(item);
     } else if (!dac_queue_.empty()) {
       // Highest y first: costs then flow down toward lower ids in one sweep.
-      std::size_t pick = 0;
-      for (std::size_t i = 1; i < dac_queue_.size(); ++i) {
-        if (view_->edges[dac_queue_[i]].y > view_->edges[dac_queue_[pick]].y) pick = i;
-      }
-      const std::uint32_t e = dac_queue_[pick];
-      dac_queue_[pick] = dac_queue_.back();
+      std::pop_heap(dac_queue_.begin(), dac_queue_.end(),
+                    [this](std::uint32_t a, std::uint32_t b) { return dac_before(a, b); });
+      const std::uint32_t e = dac_queue_.back();
       dac_queue_.pop_back();
       in_dac_[e] = 0;
       project_full(e, true);  // x < y: costs flow toward the lower id
@@ -433,10 +462,14 @@ bool SoftArcConsistency::propagate() {
       eac_queue_.pop_back();
       in_eac_[v] = 0;
       revise_existential(v);
+    } else if (prune_all_) {
+      prune_all_ = false;
+      for (csp::VariableId v = 0; v < size_.size() && !failed_; ++v) prune(v);
     } else {
       break;
     }
   }
+  prune_all_ = false;
   const bool ok = !failed_ && c0_ < top_ && add_cost(c0_, open_nary_bound()) < top_;
   clear_queues();
   failed_ = false;

@@ -143,6 +143,8 @@ class SoftArcConsistency {
   }
   // Moves the cheapest cost of each alive value row onto that side (AC*'s projection);
   // returns true when something moved.
+  // The alive values of v, in order, into `out` (stops once size_[v] are found).
+  void list_alive(csp::VariableId v, std::vector<std::uint32_t>& out) const;
   bool project_simple(std::uint32_t e, bool onto_x);
   // Full supports toward `onto_x`'s side (extension from the other side, then projection).
   bool project_full(std::uint32_t e, bool onto_x);
@@ -159,6 +161,7 @@ class SoftArcConsistency {
   void value_removed(csp::VariableId v);
   void push_ac(std::uint32_t e, bool onto_x);
   void push_dac(std::uint32_t e);
+  bool dac_before(std::uint32_t e, std::uint32_t f) const;  // heap order: f's y is higher
   void push_eac(csp::VariableId v);
   void push_nc(csp::VariableId v);
   void clear_queues();
@@ -184,7 +187,7 @@ class SoftArcConsistency {
   };
   std::vector<Change> trail_;
   // Work queues with membership flags (not trailed: emptied on failure).
-  std::vector<std::uint32_t> ac_queue_, dac_queue_;  // AC items (see revise_side), edges
+  std::vector<std::uint32_t> ac_queue_, dac_queue_;  // AC items (see revise_side); edges (a heap)
   std::vector<csp::VariableId> eac_queue_, nc_queue_;
   std::vector<std::uint32_t> nary_queue_;
   std::vector<std::uint8_t> in_ac_, in_dac_, in_eac_, in_nc_, in_nary_;
@@ -196,11 +199,13 @@ class SoftArcConsistency {
   std::vector<double> values_;
   std::vector<std::uint8_t> assigned_;
   bool failed_ = false;
+  bool prune_all_ = false;  // c0 rose: every domain to be pruned when the queues are empty
   bool stopped_ = false;
   std::uint64_t checks_ = 0;  // n-ary forward checks, for the stop check
   std::function<bool()> stop_;
   std::int64_t last_edge_ = -1;
-  std::vector<std::int64_t> scratch_alpha_, scratch_extend_;
+  std::vector<std::int64_t> scratch_alpha_;
+  std::vector<std::uint32_t> scratch_alive_;  // alive values of a pair's other side
 };
 
 }  // namespace sightline::solvers::detail

@@ -36,10 +36,19 @@ csp::VariableId SoftArcSearch::select_variable() const {
   for (csp::VariableId v = 0; v < state_.num_variables(); ++v) {
     const std::uint64_t size = state_.alive_count(v);
     if (size <= 1) continue;
-    std::uint64_t weight = 1 + state_.open_nary(v);
+    const std::size_t open_nary = state_.open_nary(v);
+    std::uint64_t weight = 1 + open_nary;
+    bool isolated = open_nary == 0;
     for (const auto& nb : state_.neighbours(v)) {
-      if (state_.alive_count(nb.other) > 1) weight += weight_[nb.edge];
+      if (state_.alive_count(nb.other) > 1) {
+        weight += weight_[nb.edge];
+        isolated = false;
+      }
     }
+    // Every cost function of v has its other variables fixed: v no longer interacts with
+    // the rest, so its best value is known without branching (leaf() picks it), as
+    // toulbar2 eliminates variables of degree 0. Not when counting: every optimum counts.
+    if (isolated && !settings_.count_mode) continue;
     // size / weight < best_size / best_weight, by cross-multiplication.
     if (best == kNone || size * best_weight < best_size * weight) {
       best = v;
@@ -55,10 +64,35 @@ void SoftArcSearch::failed() {
   if (e >= 0) ++weight_[static_cast<std::size_t>(e)];
 }
 
+// The alive value of a fixed variable.
+std::uint32_t SoftArcSearch::only_value(csp::VariableId v) const {
+  for (std::uint32_t a = 0; a < state_.domain_size(v); ++a) {
+    if (state_.alive(v, a)) return a;
+  }
+  return 0;
+}
+
 void SoftArcSearch::leaf() {
   for (csp::VariableId v = 0; v < state_.num_variables(); ++v) {
+    if (state_.alive_count(v) <= 1) values_[v] = view_->values[view_->offset[v] + only_value(v)];
+  }
+  // A variable still unfixed is isolated (select_variable): what it adds to the cost of
+  // the completion is its unary cost plus what its pairs with fixed variables still hold
+  // (0 once propagation settled, but counted anyway), so the least of that is its best.
+  for (csp::VariableId v = 0; v < state_.num_variables(); ++v) {
+    if (state_.alive_count(v) <= 1) continue;
+    std::int64_t least = -1;
     for (std::uint32_t a = 0; a < state_.domain_size(v); ++a) {
-      if (state_.alive(v, a)) values_[v] = view_->values[view_->offset[v] + a];
+      if (!state_.alive(v, a)) continue;
+      std::int64_t cost = state_.unary(v, a);
+      for (const auto& nb : state_.neighbours(v)) {
+        const std::uint32_t b = only_value(nb.other);
+        cost = add_cost(cost, nb.is_x ? state_.binary(nb.edge, a, b) : state_.binary(nb.edge, b, a));
+      }
+      if (least < 0 || cost < least) {
+        least = cost;
+        values_[v] = view_->values[view_->offset[v] + a];
+      }
     }
   }
   const csp::Score score = problem_->score(values_);

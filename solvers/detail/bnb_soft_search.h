@@ -9,8 +9,10 @@
 // Optional last-conflict: a variable whose assignment failed is chosen again next.
 // A node fails when propagation empties a domain or c0 reaches top (the incumbent's cost,
 // plus one when counting optimal solutions so that every optimum is visited); a leaf is a
-// state where every domain holds one value, scored with Problem::score. Undo is the
-// consistency's trail.
+// state where every domain holds one value, or where the variables left unfixed are
+// isolated (every cost function on them has its other variables fixed: each takes its
+// cheapest value there, without branching, unless counting), scored with Problem::score.
+// Undo is the consistency's trail.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +42,7 @@ class SoftArcSearch {
  private:
   void search();
   void leaf();
+  std::uint32_t only_value(csp::VariableId v) const;
   csp::VariableId select_variable() const;
   void failed();
   std::int64_t top() const;

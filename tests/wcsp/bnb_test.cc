@@ -241,5 +241,57 @@ TEST(BranchAndBound, DefaultOptionsAreValidAndContinuousProblemsAreRefused) {
   EXPECT_THROW(SolverRegistry::global().create("bnb", {{"count_optimal", "maybe"}}), OptionError);
 }
 
+// A star: a hub of 3 values and 12 spokes of 6, soft tables hub-spoke and unary costs on
+// the spokes. Once the hub is fixed every spoke is isolated (its only pair has its other
+// side fixed), so bnb with soft arc consistency branches on the hub alone and takes each
+// spoke's cheapest value at the leaf: a few nodes, not one or two per spoke per dive. The
+// optimum is known in closed form: min over hub values of the sum of each spoke's least.
+TEST(BranchAndBound, TakesIsolatedVariablesBestValueWithoutBranchingOnThem) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> cost(0, 9);
+  csp::Problem p;
+  const VariableId hub = p.add_variable("hub", csp::Domain::value_set({0, 1, 2}));
+  std::vector<std::vector<std::vector<int>>> total(12);  // [spoke][hub value][spoke value]
+  for (int s = 0; s < 12; ++s) {
+    const VariableId v =
+        p.add_variable("s" + std::to_string(s), csp::Domain::value_set({0, 1, 2, 3, 4, 5}));
+    std::vector<csp::Table::Entry> unary, pair;
+    std::vector<int> own(6);
+    for (int b = 0; b < 6; ++b) {
+      own[b] = cost(rng);
+      unary.push_back({{double(b)}, double(own[b])});
+    }
+    total[s].assign(3, std::vector<int>(6));
+    for (int h = 0; h < 3; ++h) {
+      for (int b = 0; b < 6; ++b) {
+        const int c = cost(rng);
+        pair.push_back({{double(h), double(b)}, double(c)});
+        total[s][h][b] = own[b] + c;
+      }
+    }
+    p.add_constraint(std::make_unique<csp::Table>(std::vector<VariableId>{v}, unary, 0.0, 1.0));
+    p.add_constraint(
+        std::make_unique<csp::Table>(std::vector<VariableId>{hub, v}, pair, 0.0, 1.0));
+  }
+  int optimum = -1;
+  for (int h = 0; h < 3; ++h) {
+    int sum = 0;
+    for (const auto& spoke : total) sum += *std::min_element(spoke[h].begin(), spoke[h].end());
+    if (optimum < 0 || sum < optimum) optimum = sum;
+  }
+  const SolverResult r =
+      SolverRegistry::global().create("bnb")->solve(p, p.default_assignment(), SolveContext{});
+  ASSERT_EQ(r.stop, StopReason::kProvenOptimal) << r.message;
+  EXPECT_EQ(r.cost(), optimum);
+  EXPECT_EQ(p.score(r.best).soft, optimum);
+  EXPECT_LE(r.iterations, 6u) << r.message;  // two branches per hub value at most
+  // Counting every optimum still branches on the spokes (ties must all be visited).
+  const SolverResult counted = SolverRegistry::global()
+                                   .create("bnb", {{"count_optimal", "true"}})
+                                   ->solve(p, p.default_assignment(), SolveContext{});
+  EXPECT_EQ(counted.cost(), optimum);
+  EXPECT_GT(counted.iterations, 12u);
+}
+
 }  // namespace
 }  // namespace sightline::solvers
