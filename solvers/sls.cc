@@ -1,5 +1,7 @@
 #include "solvers/sls.h"
 
+#include <utility>
+
 #include "solvers/detail/sls_engines.h"
 
 namespace sightline::solvers {
@@ -84,9 +86,10 @@ void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   Budget budget(context.limits, 256);
   result.solutions_at_best = 0;
   const std::uint64_t cap = restart_cap(context);
-  std::optional<csp::Score> scored;
+  std::optional<FullEvaluation> evaluated;
   if (problem.all_discrete()) {
-    scored = detail::run_discrete_sls(problem, start, options_, cap, context.seed, budget, result);
+    evaluated = detail::run_discrete_sls(problem, start, options_, cap, context.seed, budget,
+                                         result, context.want_breakdown);
   } else {
     detail::run_continuous_sls(problem, start, options_, cap, context.seed, budget, result,
                                current_, candidate_);
@@ -100,7 +103,7 @@ void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
                            : " restarts is the default when no limit is set: give a time, "
                              "evaluation or iteration limit, or restarts=N");
   }
-  finish_result(problem, context, budget, result, scored);
+  finish_result(problem, context, budget, result, std::move(evaluated));
 }
 
 }  // namespace sightline::solvers

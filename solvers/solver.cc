@@ -1,6 +1,7 @@
 #include "solvers/solver.h"
 
 #include <sstream>
+#include <utility>
 
 namespace sightline::solvers {
 
@@ -83,11 +84,28 @@ void Budget::record_best(std::uint64_t evaluations, double seconds) {
   best_evaluations_ = evaluations;
 }
 
+FullEvaluation evaluate_fully(const csp::Problem& problem, std::span<const double> values,
+                              bool keep_breakdown) {
+  FullEvaluation out;
+  if (!keep_breakdown) {
+    out.score = problem.score(values);
+    return out;
+  }
+  out.breakdown = problem.breakdown(values);
+  // Summed as Problem::score sums constraint_score, in the same order: the same bits.
+  for (const csp::ConstraintCost& c : out.breakdown) {
+    out.score += c.hard ? csp::Score{c.cost, 0} : csp::Score{0, c.cost};
+  }
+  return out;
+}
+
 void finish_result(const csp::Problem& problem, const SolveContext& context,
-                   const Budget& budget, SolverResult& result, std::optional<csp::Score> scored) {
-  result.score = scored ? *scored : problem.score(result.best);
+                   const Budget& budget, SolverResult& result,
+                   std::optional<FullEvaluation> evaluated) {
+  if (!evaluated) evaluated = evaluate_fully(problem, result.best, context.want_breakdown);
+  result.score = evaluated->score;
   if (context.want_breakdown) {
-    result.breakdown = problem.breakdown(result.best);
+    result.breakdown = std::move(evaluated->breakdown);
   } else {
     result.breakdown.clear();
   }

@@ -146,13 +146,27 @@ class Budget {
   std::uint64_t best_evaluations_ = 0;
 };
 
+// One from-scratch evaluation of an assignment, constraint by constraint: its score and, when
+// kept, the per-constraint costs it is the sum of. Kept together so that a solver which must
+// verify its final assignment from scratch (sls at a zero-cost assignment) and the result's
+// printed score and breakdown share one evaluation instead of making it two or three times.
+struct FullEvaluation {
+  csp::Score score;
+  std::vector<csp::ConstraintCost> breakdown;  // empty unless asked for
+};
+
+// Evaluates every constraint once. `score` is bit for bit Problem::score(values) (the same
+// sums in the same order); `breakdown`, when `keep_breakdown`, is Problem::breakdown(values).
+FullEvaluation evaluate_fully(const csp::Problem& problem, std::span<const double> values,
+                              bool keep_breakdown);
+
 // Shared ending: stores score/breakdown of `result.best`, the wall time and the time to best
-// (from the budget's note_best; -1 when the solver noted none). The score is
-// computed from scratch (Problem::score) unless the solver passes `scored`: the score of
-// result.best it has itself just computed from scratch (sls, which checks a zero-cost
-// assignment that way before it stops), so the same evaluation is not made twice.
+// (from the budget's note_best; -1 when the solver noted none). Score and breakdown come
+// from one evaluate_fully of result.best unless the solver passes `evaluated`: its own
+// evaluate_fully of result.best, made from scratch just before it stopped (sls checks a
+// zero-cost assignment that way), with the breakdown kept if context.want_breakdown.
 void finish_result(const csp::Problem& problem, const SolveContext& context,
                    const Budget& budget, SolverResult& result,
-                   std::optional<csp::Score> scored = std::nullopt);
+                   std::optional<FullEvaluation> evaluated = std::nullopt);
 
 }  // namespace sightline::solvers

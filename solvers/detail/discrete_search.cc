@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "solvers/detail/group_placement.h"
 #include "solvers/detail/sls_engines.h"
@@ -34,8 +35,9 @@ DiscreteSearch::DiscreteSearch(const csp::Problem& problem, const SlsSolver::Opt
                                          : 10 * static_cast<std::uint64_t>(n_) + 1000;
 }
 
-std::optional<csp::Score> DiscreteSearch::run(std::span<const double> start,
-                                              SolverResult& result) {
+std::optional<FullEvaluation> DiscreteSearch::run(std::span<const double> start,
+                                                  SolverResult& result, bool keep_breakdown) {
+  keep_breakdown_ = keep_breakdown;
   csp::Assignment values;
   prepare_start(problem_, start, values);
   make_groups_permutations(values);
@@ -50,7 +52,7 @@ std::optional<csp::Score> DiscreteSearch::run(std::span<const double> start,
   result.iterations = iterations_;
   result.stop = stop_;
   result.message = message_;
-  return target_score_;
+  return std::move(target_);
 }
 
 void DiscreteSearch::make_groups_permutations(csp::Assignment& values) {
@@ -159,15 +161,16 @@ bool DiscreteSearch::check_target() {
   if (!options_.stop_at_zero) return false;
   const csp::Score s = evaluator_->score();
   if (s.hard > kNearZero || s.soft > kNearZero) return false;
-  const csp::Score exact = problem_.score(evaluator_->values());
-  if (!is_zero(exact)) {
+  FullEvaluation exact = evaluate_fully(problem_, evaluator_->values(), keep_breakdown_);
+  if (!is_zero(exact.score)) {
     evaluator_->resynchronise();  // the incremental sums had drifted: start them afresh
     return false;
   }
   // The current assignment becomes the best even when an earlier one scored as well: the
-  // search ends on it, and target_score_ is its score, computed from scratch just now.
-  new_best(exact);
-  target_score_ = exact;
+  // search ends on it, and target_ its evaluation from scratch just now, which the result
+  // takes as its score and breakdown (finish_result) instead of evaluating it again.
+  new_best(exact.score);
+  target_ = std::move(exact);
   stopped_ = true;
   stop_ = StopReason::kTargetReached;
   return true;
@@ -271,13 +274,14 @@ void DiscreteSearch::main_loop() {
   }
 }
 
-std::optional<csp::Score> run_discrete_sls(const csp::Problem& problem,
-                                           std::span<const double> start,
-                                           const SlsSolver::Options& options,
-                                           std::uint64_t restart_cap, std::uint64_t seed,
-                                           Budget& budget, SolverResult& result) {
+std::optional<FullEvaluation> run_discrete_sls(const csp::Problem& problem,
+                                               std::span<const double> start,
+                                               const SlsSolver::Options& options,
+                                               std::uint64_t restart_cap, std::uint64_t seed,
+                                               Budget& budget, SolverResult& result,
+                                               bool keep_breakdown) {
   DiscreteSearch search(problem, options, restart_cap, seed, budget);
-  return search.run(start, result);
+  return search.run(start, result, keep_breakdown);
 }
 
 }  // namespace sightline::solvers::detail

@@ -38,10 +38,12 @@ class DiscreteSearch {
   DiscreteSearch(const csp::Problem& problem, const SlsSolver::Options& options,
                  std::uint64_t restart_cap, std::uint64_t seed, Budget& budget);
 
-  // Fills result.best, evaluations, iterations, stop and message. Returns the score of
-  // result.best when the search stopped on a zero-cost assignment, which it has checked
-  // from scratch (Problem::score), and nothing otherwise.
-  std::optional<csp::Score> run(std::span<const double> start, SolverResult& result);
+  // Fills result.best, evaluations, iterations, stop and message. Returns the full
+  // evaluation of result.best (evaluate_fully, with the breakdown when `keep_breakdown`)
+  // when the search stopped on a zero-cost assignment, which it checks that way from
+  // scratch, and nothing otherwise.
+  std::optional<FullEvaluation> run(std::span<const double> start, SolverResult& result,
+                                    bool keep_breakdown);
 
  private:
   // --- runs and restarts ---------------------------------------------------------------
@@ -183,7 +185,8 @@ class DiscreteSearch {
   std::uint64_t stall_ = 0, stall_limit_ = 0, restarts_used_ = 0;
   const std::uint64_t restart_cap_;  // 0 = none
   bool stopped_ = false;
-  std::optional<csp::Score> target_score_;  // set by check_target when it stops the search
+  bool keep_breakdown_ = false;  // in the target check's evaluation (see run)
+  std::optional<FullEvaluation> target_;  // set by check_target when it stops the search
   StopReason stop_ = StopReason::kCompleted;
   std::string message_;
 };
