@@ -35,12 +35,14 @@ void IncrementalEvaluator::resynchronise() {
   evaluations_ += m;
   tracked_.resize(m);
   occupied_keys_.assign(m, {});
+  all_partial_ = true;
   for (ConstraintId id = 0; id < m; ++id) {
     const Constraint& c = problem_->constraint(id);
     IncrementalState* state = states_[id].get();
     const bool partial = state && state->supports_partial();
     tracked_[id] = {state, &c, c.weight(), c.is_hard(), partial, constant_[id] != 0};
     if (partial) occupied_keys_[id] = state->occupied_keys();
+    if (!partial && !constant_[id]) all_partial_ = false;
   }
 }
 
@@ -100,6 +102,7 @@ double IncrementalEvaluator::involvement(VariableId var) {
 }
 
 bool IncrementalEvaluator::can_retract(VariableId var) const {
+  if (all_partial_) return true;
   for (const Incidence& link : links(var)) {
     const Tracked& t = tracked_[link.constraint];
     if (!t.constant && !t.partial) return false;

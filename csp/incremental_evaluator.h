@@ -122,6 +122,10 @@ class IncrementalEvaluator {
   // The Problem's variable -> constraint index (see links()).
   Problem::IncidenceIndex index_;
   std::vector<std::uint32_t> hits_;  // retract(vars)'s per-constraint scratch
+  // Every non-constant constraint supports partial assignments, so every variable can be
+  // retracted: can_retract answers at once instead of walking the variable's links (a
+  // constructive start asks it of a million variables).
+  bool all_partial_ = false;
   Score total_;
   std::size_t evaluations_ = 0;
 };

@@ -205,5 +205,33 @@ TEST(AllDifferentPartial, AVariableWithAConstraintThatCannotRetractIsRefused) {
   EXPECT_THROW(evaluator.retract(both), std::logic_error);
 }
 
+// When every constraint the evaluator follows supports partial assignments, can_retract
+// answers without walking the variable's links: that shortcut must hold only then. A table
+// (no partial support) named constant is not followed and so does not count; not named
+// constant, it makes its own variables refused and no other; a variable in no constraint
+// can always be retracted.
+TEST(AllDifferentPartial, EveryVariableCanRetractExactlyWhenNoFollowedConstraintForbidsIt) {
+  Problem p;
+  const VariableId x = p.add_variable("x", Domain::integer_range(0, 3));
+  const VariableId y = p.add_variable("y", Domain::integer_range(0, 3));
+  const VariableId z = p.add_variable("z", Domain::integer_range(0, 3));
+  const VariableId lone = p.add_variable("lone", Domain::integer_range(0, 3));
+  p.add_constraint(std::make_unique<AllDifferent>(std::vector<VariableId>{x, y, z}));
+  const std::vector<Table::Entry> entries = {{{0, 0}, 1.0}};
+  const ConstraintId table =
+      p.add_constraint(std::make_unique<Table>(std::vector<VariableId>{x, y}, entries, 0.0));
+  const std::vector<ConstraintId> constant = {table};
+  IncrementalEvaluator followed(p, {0, 0, 1, 2});
+  IncrementalEvaluator skipped(p, {0, 0, 1, 2}, constant);
+  for (VariableId v : {x, y, z, lone}) {
+    EXPECT_EQ(followed.can_retract(v), v == z || v == lone) << v;
+    EXPECT_TRUE(skipped.can_retract(v)) << v;
+  }
+  const std::vector<VariableId> all = {x, y, z};
+  skipped.retract(all);  // allowed now, and the all_different alone is followed
+  EXPECT_EQ(skipped.violation(0), 0);
+  EXPECT_THROW(followed.retract(all), std::logic_error);
+}
+
 }  // namespace
 }  // namespace sightline::csp
