@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -235,6 +238,72 @@ TEST(AllDifferent, KeyRangeChecksEachDomainOfABatchAndOfSingleVariables) {
   p.add_variables("y", 2, Domain::value_set({0, 0.5}));
   EXPECT_FALSE(key_range_from_domains(p, std::vector<VariableId>{first, odd + 1, odd + 2}, {})
                    .has_value());
+}
+
+// Against brute force: random problems of batches and single variables (integer ranges,
+// integer and fractional value sets, real intervals) and random offsets (empty, integer,
+// fractional, huge, NaN, infinite); the range must be the min and max of value + offset
+// over every value of every scope domain when all are integers, and absent otherwise (or
+// when it is wider than the dense limit, which these small ranges never are).
+TEST(AllDifferent, KeyRangeIsTheBruteForceRangeOfIntegerKeysOrNothing) {
+  std::mt19937 rng(1616);
+  const std::vector<double> odd_offsets = {0.5, -2.25, 3e15, -1e16, std::nan(""),
+                                           std::numeric_limits<double>::infinity()};
+  for (int round = 0; round < 300; ++round) {
+    Problem p;
+    const auto random_domain = [&]() {
+      switch (rng() % 6) {
+        case 0: return Domain::real_interval(0, 3);
+        case 1: return Domain::value_set({-3, 1.5, 4});
+        case 2: return Domain::value_set({-7, 2, 9});
+        default: {
+          const double lo = static_cast<double>(rng() % 11) - 5;
+          return Domain::integer_range(lo, lo + static_cast<double>(rng() % 6));
+        }
+      }
+    };
+    while (p.num_variables() < 6) {
+      if (rng() % 2 == 0) {
+        p.add_variables("b" + std::to_string(p.num_variables()), 1 + rng() % 4, random_domain());
+      } else {
+        p.add_variable("s" + std::to_string(p.num_variables()), random_domain());
+      }
+    }
+    std::vector<VariableId> scope;
+    for (VariableId v = 0; v < p.num_variables(); ++v) {
+      if (rng() % 3 != 0) scope.push_back(v);
+    }
+    if (scope.empty()) scope.push_back(0);
+    std::vector<double> offsets;
+    if (rng() % 3 != 0) {
+      for (std::size_t i = 0; i < scope.size(); ++i) {
+        offsets.push_back(rng() % 12 == 0 ? odd_offsets[rng() % odd_offsets.size()]
+                                          : static_cast<double>(rng() % 9) - 4);
+      }
+    }
+    bool integers = true;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < scope.size(); ++i) {
+      const Domain& d = p.domain(scope[i]);
+      const double offset = offsets.empty() ? 0.0 : offsets[i];
+      if (!d.is_discrete() || !std::isfinite(offset) || offset != std::floor(offset) ||
+          std::abs(offset) > 1e15) {
+        integers = false;
+        break;
+      }
+      for (std::size_t k = 0; k < d.size(); ++k) {
+        const double key = d.value_at(k) + offset;
+        if (key != std::floor(key)) integers = false;
+        lo = std::min(lo, key);
+        hi = std::max(hi, key);
+      }
+    }
+    const auto range = key_range_from_domains(p, scope, offsets);
+    ASSERT_EQ(range.has_value(), integers) << "round " << round;
+    if (!integers) continue;
+    EXPECT_EQ(range->lo, static_cast<std::int64_t>(lo)) << "round " << round;
+    EXPECT_EQ(range->hi, static_cast<std::int64_t>(hi)) << "round " << round;
+  }
 }
 
 class AllDifferentKind : public ::testing::Test {
