@@ -31,7 +31,7 @@ struct SolveLimits {
 struct SolveContext {
   std::uint64_t seed = 1;
   SolveLimits limits;
-  bool want_breakdown = true;  // fill SolverResult::breakdown (a vector; the score comes from the same pass)
+  bool want_breakdown = true;  // fill SolverResult::breakdown (one vector, same pass as the score)
   // Alternatives (see SolverResult::alternatives): how many a solver should hand over, 0 =
   // none. A pipeline sets it to what its next stage asks for (Solver::alternatives_wanted),
   // and a global solver that explores may then spend extra work to find them.
