@@ -32,6 +32,9 @@ const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
            "rank moves by hard_weight x hard + soft (a penalty); 0 = hard first; -1 = adaptive "
            "(strategic oscillation)",
            -1);
+    s.boolean("compound_moves", &Options::compound_moves,
+              "also try pair moves: when moving x breaks a hard binary constraint with y, move y "
+              "to a value allowed with x's new one (scored exactly)");
     s.boolean("stop_at_zero", &Options::stop_at_zero, "stop at a zero-cost feasible assignment");
     return s;
   }();

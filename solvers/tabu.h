@@ -17,9 +17,17 @@
 // re-evaluation. Candidates are every variable when the table has at most
 // `scan_all_below` entries, else the variables in a violated constraint (soft ones count).
 //
+// Compound moves (`compound_moves`, on by default): when moving v to a breaks a hard binary
+// constraint with u (frequency assignment's duplex |f_v - f_u| = d, any hard table), the
+// pair move "v = a, u = b" for every b of u allowed with a is a candidate as well, scored by
+// the exact change of both (detail/compound_moves.h); without it, tied pairs can only move
+// one half at a time across infeasible ground. Problems without hard binary constraints
+// search exactly as without the option.
+//
 // Tabu: after v leaves value a, moving v back to a is forbidden for a tenure drawn
 // uniformly in [tenure_min, tenure_max] steps, unless the move would beat the best score
-// found (aspiration). The best admissible move is taken even when it worsens the score
+// found (aspiration); a pair move is tabu when either of its values is, and after it both
+// variables' old values are tabu. The best admissible move is taken even when it worsens the score
 // (that is how tabu search leaves local minima); ties are broken at random.
 //
 // Stagnation: after `stall_moves` steps without a new best, the search perturbs the best
@@ -62,6 +70,7 @@ class TabuSolver : public Solver {
     bool stop_at_zero = true;              // stop at a zero-cost feasible assignment
     double hard_weight = -1;               // moves ranked by hard_weight x hard + soft; 0 = hard
                                            // first (lexicographic); -1 = adaptive
+    bool compound_moves = true;            // pair moves repairing hard binary constraints
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;
