@@ -92,6 +92,23 @@ CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entrie
       }
     }
     support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
+    // Conflicts: the complements, indexed by the partner's value (stored in supports_ too).
+    p.row_conflicts = support_start_.size();
+    for (std::uint32_t b = 0; b < p.cols; ++b) {
+      support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
+      for (std::uint32_t a = 0; a < p.rows; ++a) {
+        if (!allowed_[p.matrix + std::size_t{a} * p.cols + b]) supports_.push_back(a);
+      }
+    }
+    support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
+    p.col_conflicts = support_start_.size();
+    for (std::uint32_t a = 0; a < p.rows; ++a) {
+      support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
+      for (std::uint32_t b = 0; b < p.cols; ++b) {
+        if (!allowed_[p.matrix + std::size_t{a} * p.cols + b]) supports_.push_back(b);
+      }
+    }
+    support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
   }
   // Per variable, its links (CSR).
   link_start_.assign(n + 1, 0);
@@ -117,6 +134,12 @@ bool CompoundMoves::allowed(const Link& link, std::uint32_t a, std::uint32_t b) 
 std::span<const std::uint32_t> CompoundMoves::supports(const Link& link, std::uint32_t a) const {
   const Pair& p = pairs_[link.pair];
   const std::size_t at = (link.self_is_first ? p.row_supports : p.col_supports) + a;
+  return {supports_.data() + support_start_[at], supports_.data() + support_start_[at + 1]};
+}
+
+std::span<const std::uint32_t> CompoundMoves::conflicts(const Link& link, std::uint32_t b) const {
+  const Pair& p = pairs_[link.pair];
+  const std::size_t at = (link.self_is_first ? p.row_conflicts : p.col_conflicts) + b;
   return {supports_.data() + support_start_[at], supports_.data() + support_start_[at + 1]};
 }
 

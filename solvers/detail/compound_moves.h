@@ -57,6 +57,9 @@ class CompoundMoves {
   bool allowed(const Link& link, std::uint32_t a, std::uint32_t b) const;
   // The partner's values allowed with self = a (value indices).
   std::span<const std::uint32_t> supports(const Link& link, std::uint32_t a) const;
+  // Self's values not allowed with partner = b: the moves of self that break the pair when
+  // the partner is at b (so a search visits only those, not every value of every link).
+  std::span<const std::uint32_t> conflicts(const Link& link, std::uint32_t b) const;
   // Exact score change of self: -> a together with partner: -> b, from the table's state.
   // `scratch` must equal table.values() on entry; it is restored on exit.
   csp::Score change(const MoveTable& table, csp::VariableId self, const Link& link,
@@ -76,6 +79,9 @@ class CompoundMoves {
     std::size_t matrix;          // offset of M / allowed, row-major (first's index, second's)
     std::size_t row_supports;    // offset into support_start_: rows + 1 entries (first = a)
     std::size_t col_supports;    // offset into support_start_: cols + 1 entries (second = b)
+    std::size_t row_conflicts;   // offset into support_start_: per second's value b, the
+                                 // first's values not allowed with it (cols + 1 entries)
+    std::size_t col_conflicts;   // per first's value a, the second's values (rows + 1)
   };
   csp::Score pair_cost(const Pair& p, std::uint32_t a, std::uint32_t b) const {
     return cost_[p.matrix + std::size_t{a} * p.cols + b];

@@ -181,8 +181,8 @@ class TabuSearch {
     for (const CompoundMoves::Link& link : compound_->links(v)) {
       const csp::VariableId partner = compound_->partner(link);
       const std::uint32_t there = table_.index_of(partner);
-      for (std::uint32_t a = 0; a < row.size(); ++a) {
-        if (a == here || compound_->allowed(link, a, there)) continue;
+      for (std::uint32_t a : compound_->conflicts(link, there)) {
+        if (a == here) continue;
         for (std::uint32_t b : compound_->supports(link, a)) {
           const csp::Score change = compound_->change(table_, v, link, a, b, scratch_);
           if ((is_tabu(v, a) || is_tabu(partner, b)) &&

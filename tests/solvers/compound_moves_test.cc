@@ -126,6 +126,9 @@ TEST(CompoundMoves, EveryPairMoveScoresTheExactChangeOfBothVariables) {
               const auto sup = compound.supports(link, a);
               EXPECT_EQ(compound.allowed(link, a, b), hard_ok);
               EXPECT_EQ(std::find(sup.begin(), sup.end(), b) != sup.end(), hard_ok);
+              // ... and self's conflicts with partner = b exactly the values that break them.
+              const auto con = compound.conflicts(link, b);
+              EXPECT_EQ(std::find(con.begin(), con.end(), a) != con.end(), !hard_ok);
             }
           }
         }
