@@ -48,7 +48,7 @@ class LnsSolver : public Solver {
     std::int64_t min_size = 4;        // smallest neighbourhood, variables (>= 1)
     std::int64_t max_size = 0;        // largest neighbourhood; 0 = every variable
     std::int64_t node_limit = 10000;  // bnb nodes per neighbourhood (>= 1)
-    std::int64_t node_doublings = 10; // node limit doubles per fruitless round, this often
+    std::int64_t node_doublings = 0;  // node limit doubles per fruitless round, this often
     std::int64_t rounds = -1;         // cap on rounds without improvement; -1 = none when a
                                       // limit is set (3 without)
     bool greedy_start = true;         // one greedy pass over the start first

@@ -15,7 +15,8 @@ bool on_both(const csp::Constraint& c, csp::VariableId x, csp::VariableId y) {
 
 }  // namespace
 
-CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entries)
+CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entries,
+                             double max_density)
     : problem_(problem) {
   const std::size_t n = problem.num_variables();
   // The pairs, in the order of their first hard binary constraint.
@@ -47,6 +48,7 @@ CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entrie
   wider_start_.assign(pairs_.size() + 1, 0);
   csp::Assignment scratch = problem.default_assignment();
   std::vector<csp::ConstraintId> binary;
+  std::vector<char> loose(pairs_.size(), 0);
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
     Pair& p = pairs_[k];
     binary.clear();
@@ -76,6 +78,7 @@ CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entrie
       }
     }
     // Supports of each row value (columns allowed with it), then of each column value.
+    const std::size_t first_support = supports_.size();
     p.row_supports = support_start_.size();
     for (std::uint32_t a = 0; a < p.rows; ++a) {
       support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
@@ -92,6 +95,9 @@ CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entrie
       }
     }
     support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
+    // Each allowed value pair is listed twice (as a row's support and as a column's).
+    loose[k] = static_cast<double>(supports_.size() - first_support) >
+               2 * max_density * static_cast<double>(std::size_t{p.rows} * p.cols);
     // Conflicts: the complements, indexed by the partner's value (stored in supports_ too).
     p.row_conflicts = support_start_.size();
     for (std::uint32_t b = 0; b < p.cols; ++b) {
@@ -110,16 +116,19 @@ CompoundMoves::CompoundMoves(const csp::Problem& problem, std::size_t max_entrie
     }
     support_start_.push_back(static_cast<std::uint32_t>(supports_.size()));
   }
-  // Per variable, its links (CSR).
+  // Per variable, its links (CSR); loose pairs get none (their tables stay, unused).
   link_start_.assign(n + 1, 0);
-  for (const Pair& p : pairs_) {
-    ++link_start_[p.first + 1];
-    ++link_start_[p.second + 1];
+  for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+    if (loose[k]) continue;
+    ++link_start_[pairs_[k].first + 1];
+    ++link_start_[pairs_[k].second + 1];
   }
   for (std::size_t v = 0; v < n; ++v) link_start_[v + 1] += link_start_[v];
   links_.resize(link_start_[n]);
   std::vector<std::uint32_t> fill(link_start_.begin(), link_start_.end() - 1);
   for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
+    if (loose[k]) continue;
+    tight_pairs_ += 1;
     links_[fill[pairs_[k].first]++] = {k, true};
     links_[fill[pairs_[k].second]++] = {k, false};
   }

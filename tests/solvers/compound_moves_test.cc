@@ -89,8 +89,11 @@ std::unique_ptr<csp::Problem> duplex_problem(std::uint64_t seed, int pairs, int 
 TEST(CompoundMoves, EveryPairMoveScoresTheExactChangeOfBothVariables) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const auto p = duplex_problem(seed, 4, 5, 10, true);
-    detail::CompoundMoves compound(*p);
+    // Every pair, loose ones included (the generic table allows 22 of 25 value pairs).
+    detail::CompoundMoves compound(*p, std::size_t{1} << 20, 1.0);
     ASSERT_EQ(compound.num_pairs(), 5u);  // four duplex pairs and the generic hard table
+    // By default only the tight ones (duplex: at most 2 of 5 values per value).
+    EXPECT_EQ(detail::CompoundMoves(*p).num_pairs(), 4u);
     detail::MoveTable table(*p);
     std::mt19937_64 rng(seed);
     csp::Assignment start(p->num_variables());
