@@ -21,8 +21,11 @@
 // constraint with u (frequency assignment's duplex |f_v - f_u| = d, any hard table), the
 // pair move "v = a, u = b" for every b of u allowed with a is a candidate as well, scored by
 // the exact change of both (detail/compound_moves.h); without it, tied pairs can only move
-// one half at a time across infeasible ground. Problems without hard binary constraints
-// search exactly as without the option.
+// one half at a time across infeasible ground. Only tight pairs count (hard constraints
+// allowing at most half the value pairs: loose ones seldom block a move, and their pair
+// moves crowded out better ones on warehouse location); a perturbation (below) that breaks
+// a tight pair repairs it with a random support. Problems without tight hard binary
+// constraints search exactly as without the option.
 //
 // Tabu: after v leaves value a, moving v back to a is forbidden for a tenure drawn
 // uniformly in [tenure_min, tenure_max] steps, unless the move would beat the best score

@@ -265,7 +265,19 @@ class TabuSearch {
       std::swap(order_[k], order_[k + random_.index(n_ - k)]);
       const csp::VariableId v = order_[k];
       const csp::Domain& d = problem_.domain(v);
-      values[v] = d.value_at(random_.index(d.size()));
+      const auto a = static_cast<std::uint32_t>(random_.index(d.size()));
+      values[v] = d.value_at(a);
+      if (!compound_) continue;
+      // A tight pair broken by the new value is repaired at once (a random support of it):
+      // a perturbation that broke pairs would mostly be undone by the first moves.
+      for (const CompoundMoves::Link& link : compound_->links(v)) {
+        const csp::VariableId u = compound_->partner(link);
+        const csp::Domain& du = problem_.domain(u);
+        const auto b = static_cast<std::uint32_t>(*du.index_of(values[u]));
+        if (compound_->allowed(link, a, b)) continue;
+        const auto supports = compound_->supports(link, a);
+        if (!supports.empty()) values[u] = du.value_at(supports[random_.index(supports.size())]);
+      }
     }
     if (!rebuild(values)) return;
     std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
