@@ -28,7 +28,9 @@
 // constraints search exactly as without the option.
 //
 // Tabu: after v leaves value a, moving v back to a is forbidden for a tenure drawn
-// uniformly in [tenure_min, tenure_max] steps, unless the move would beat the best score
+// uniformly in [tenure_min, tenure_max] steps (auto: max(2, D / 6) and max(10, 0.7 D) for a
+// mean domain size D: 2..10 up to 14 values, 7..31 at 44, where 2..10 let the search cycle
+// among the few dozen values of a frequency-assignment pair), unless the move would beat the best score
 // found (aspiration); a pair move is tabu when either of its values is, and after it both
 // variables' old values are tabu. The best admissible move is taken even when it worsens the score
 // (that is how tabu search leaves local minima); ties are broken at random.
@@ -63,8 +65,8 @@ namespace sightline::solvers {
 class TabuSolver : public Solver {
  public:
   struct Options {
-    std::int64_t tenure_min = 2;   // shortest tabu tenure, steps (>= 0)
-    std::int64_t tenure_max = 10;  // longest tabu tenure, steps (>= tenure_min)
+    std::int64_t tenure_min = -1;  // shortest tabu tenure, steps (>= 0); -1 = auto
+    std::int64_t tenure_max = -1;  // longest tabu tenure, steps (>= tenure_min); -1 = auto
     std::int64_t stall_moves = 0;  // steps without a new best before a perturbation;
                                    // 0 = auto (100 x variables, at least 2000)
     double perturbation = 0.1;     // fraction of the variables a perturbation changes, (0, 1]

@@ -31,6 +31,18 @@ class TabuSearch {
         random_(seed),
         table_(problem),
         n_(problem.num_variables()) {
+    // Tenure bounds (tabu.h): automatic ones follow the mean domain size.
+    double mean_domain = 0;
+    for (csp::VariableId v = 0; v < n_; ++v) {
+      mean_domain += static_cast<double>(problem.domain(v).size());
+    }
+    mean_domain /= static_cast<double>(std::max<std::size_t>(1, n_));
+    const auto auto_min = std::max<std::int64_t>(2, std::llround(mean_domain / 6));
+    const auto auto_max = std::max<std::int64_t>(10, std::llround(0.7 * mean_domain));
+    tenure_min_ = options.tenure_min >= 0
+                      ? options.tenure_min
+                      : (options.tenure_max >= 0 ? std::min(auto_min, options.tenure_max) : auto_min);
+    tenure_max_ = options.tenure_max >= 0 ? options.tenure_max : std::max(auto_max, tenure_min_);
     if (options.compound_moves) {
       compound_.emplace(problem);
       if (compound_->num_pairs() == 0) compound_.reset();
@@ -251,8 +263,8 @@ class TabuSearch {
 
   std::uint64_t draw_tenure() {
     return static_cast<std::uint64_t>(
-        options_.tenure_min + static_cast<std::int64_t>(random_.index(static_cast<std::size_t>(
-                                  options_.tenure_max - options_.tenure_min + 1))));
+        tenure_min_ + static_cast<std::int64_t>(
+                          random_.index(static_cast<std::size_t>(tenure_max_ - tenure_min_ + 1))));
   }
 
   // From the best assignment, `strength` distinct random variables take random values.
@@ -298,6 +310,7 @@ class TabuSearch {
   Random random_;
   MoveTable table_;
   const std::size_t n_;
+  std::int64_t tenure_min_ = 2, tenure_max_ = 10;
   std::optional<CompoundMoves> compound_;  // none: one-variable moves only
   csp::Assignment scratch_;                // table_.values(), for CompoundMoves::change
   std::vector<std::uint64_t> tabu_until_;  // per (variable, value): step until which it is tabu
