@@ -18,7 +18,8 @@
 // Neighbourhood size, as in variable neighbourhood search: k starts at `min_size`, grows by
 // one after each step that brings no improvement, up to `max_size` (0 = every variable),
 // then starts over at `min_size` (a "round"); an improvement resets it to `min_size`.
-// bnb's node limit grows likewise, as toulbar2's VNS doubles its discrepancy limit when a
+// Optionally (`node_doublings` > 0; off by default, no clear gain measured) bnb's node
+// limit grows likewise, as toulbar2's VNS doubles its discrepancy limit when a
 // round of sizes brings nothing: `node_limit` doubles after each fruitless round (at most
 // `node_doublings` times) and comes back to `node_limit` on an improvement, so a search
 // stuck with neighbourhoods too large for the limit searches them deeper instead of
