@@ -60,13 +60,16 @@ double process_cpu_seconds() {
 }
 
 Cell run_ours(const csp::Problem& problem, const std::string& solver, int runs, double limit,
-              bool use_cpu) {
+              bool use_cpu, const solvers::OptionValues& extra) {
   Cell cell;
   std::vector<double> times;
   for (int seed = 1; seed <= runs; ++seed) {
     solvers::OptionValues options;
     if (solver == "sls") options["restarts"] = "200";
     if (solver == "sls>bnb") options["sls.restarts"] = "200";
+    for (const auto& [key, value] : extra) {
+      if (key.rfind(solver + ".", 0) == 0) options[key.substr(solver.size() + 1)] = value;
+    }
     auto s = solvers::SolverRegistry::global().create(solver, options);
     solvers::SolveContext context;
     context.seed = static_cast<std::uint64_t>(seed);
@@ -153,12 +156,36 @@ int main(int argc, char** argv) {
   app.add_flag("--cpu", use_cpu,
                "our times in CPU seconds (toulbar2 prints CPU time), not wall: for a loaded "
                "machine");
+  std::vector<std::string> columns = {"sls", "bnb", "sls>bnb", "tabu", "lns", "toulbar2"};
+  app.add_option("--solvers", columns,
+                 "the columns, in order (default: sls bnb sls>bnb tabu lns toulbar2); any "
+                 "registered solver or pipeline, toulbar2 for the reference program")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  std::vector<std::string> settings;
+  app.add_option("--set", settings,
+                 "SOLVER.OPTION=VALUE for one column's solver (e.g. tabu.hard_weight=0); "
+                 "repeatable")
+      ->allow_extra_args(false);
   app.add_option("files", files, ".wcsp files")->required();
   CLI11_PARSE(app, argc, argv);
+  solvers::OptionValues extra;
+  for (const std::string& setting : settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos) {
+      std::cerr << "--set expects SOLVER.OPTION=VALUE, got '" << setting << "'\n";
+      return 1;
+    }
+    extra[setting.substr(0, eq)] = setting.substr(eq + 1);
+  }
 
-  std::cout << "| instance | optimum | sls | time | bnb | time | sls>bnb | time | tabu | time | "
-               "lns | time | toulbar2 | its time | wall |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout << "| instance | optimum |";
+  std::string rule = "|---|---:|";
+  for (const std::string& column : columns) {
+    std::cout << (column == "toulbar2" ? " toulbar2 | its time | wall |" : " " + column + " | time |");
+    rule += column == "toulbar2" ? "---:|---:|---:|" : "---:|---:|";
+  }
+  std::cout << "\n" << rule << "\n";
   for (const std::string& path : files) {
     std::unique_ptr<csp::Problem> problem;
     try {
@@ -170,14 +197,17 @@ int main(int argc, char** argv) {
     std::string name = std::filesystem::path(path).filename().string();
     name = name.substr(0, name.find(".wcsp"));
     std::cout << "| " << name << " | " << known_optimum(path);
-    for (const char* solver : {"sls", "bnb", "sls>bnb", "tabu", "lns"}) {
-      const Cell c = run_ours(*problem, solver, runs, limit, use_cpu);
-      std::cout << " | " << c.cost << " | " << seconds(c.time);
+    for (const std::string& solver : columns) {
+      if (solver == "toulbar2") {
+        const Toulbar2Cell t = run_toulbar2(toulbar2, path, runs);
+        std::cout << " | " << t.optimum << " | " << seconds(t.reported) << " | "
+                  << seconds(t.wall);
+      } else {
+        const Cell c = run_ours(*problem, solver, runs, limit, use_cpu, extra);
+        std::cout << " | " << c.cost << " | " << seconds(c.time);
+      }
     }
-    const Toulbar2Cell t = run_toulbar2(toulbar2, path, runs);
-    std::cout << " | " << t.optimum << " | " << seconds(t.reported) << " | " << seconds(t.wall)
-              << " |\n"
-              << std::flush;
+    std::cout << " |\n" << std::flush;
   }
   return 0;
 }

@@ -84,6 +84,10 @@ const OptionSchema<LnsSolver::Options>& LnsSolver::Options::schema() {
               "cap on rounds of sizes without improvement; -1 = none when a limit is set "
               "(3 without)",
               -1);
+    s.integer("node_doublings", &Options::node_doublings,
+              "the node limit doubles after each round of sizes without improvement, at most "
+              "this many times (0 = fixed); an improvement brings it back (0..30)",
+              0);
     s.boolean("greedy_start", &Options::greedy_start, "one greedy pass over the start first");
     s.real("tabu_seconds", &Options::tabu_seconds,
            "run tabu this many seconds first, within the time limit (0 = not at all)", 0);
@@ -99,6 +103,9 @@ std::string LnsSolver::Options::validate() const {
            "), got " + std::to_string(max_size);
   }
   if (node_limit < 1) return "node_limit must be >= 1, got " + std::to_string(node_limit);
+  if (node_doublings < 0 || node_doublings > 30) {
+    return "node_doublings must be in 0..30, got " + std::to_string(node_doublings);
+  }
   if (rounds < -1) return "rounds must be >= -1 (-1 = no cap), got " + std::to_string(rounds);
   if (!(tabu_seconds >= 0)) {
     return "tabu_seconds must be >= 0, got " + detail::format_real(tabu_seconds);
@@ -201,6 +208,10 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
       options_.rounds >= 0 ? options_.rounds : (unlimited ? kUnlimitedRounds : -1);
   std::size_t size = min_size;
   std::int64_t fruitless_rounds = 0;
+  // bnb's node limit: `node_limit`, doubled after each round of sizes without improvement
+  // (up to 2^node_doublings times), back to `node_limit` on an improvement.
+  const auto base_nodes = static_cast<std::uint64_t>(options_.node_limit);
+  std::uint64_t node_limit = base_nodes;
   NeighbourhoodPicker picker(problem);
   std::vector<csp::VariableId> free;
   std::vector<double> previous;
@@ -212,7 +223,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     SolveContext sub_context;
     sub_context.seed = random.bits();
     sub_context.want_breakdown = false;
-    sub_context.limits.max_iterations = static_cast<std::uint64_t>(options_.node_limit);
+    sub_context.limits.max_iterations = node_limit;
     // One evaluation is kept back for scoring the result in the whole problem.
     sub_context.limits.max_evaluations =
         limits.max_evaluations ? limits.max_evaluations - evaluations - 1 : 0;
@@ -242,8 +253,10 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     if (evaluator.score().better_than(before)) {
       size = min_size;
       fruitless_rounds = 0;
+      node_limit = base_nodes;
     } else if (++size > max_size) {
       size = min_size;
+      if (node_limit < (base_nodes << options_.node_doublings)) node_limit *= 2;
       if (round_cap >= 0 && ++fruitless_rounds >= round_cap) break;
     }
     if (detail::is_zero(best_score)) {  // nothing beats a zero-cost feasible assignment

@@ -17,7 +17,13 @@
 //     infeasible and so gives bnb no bound).
 // Neighbourhood size, as in variable neighbourhood search: k starts at `min_size`, grows by
 // one after each step that brings no improvement, up to `max_size` (0 = every variable),
-// then starts over at `min_size` (a "round"); an improvement resets it to `min_size`. When
+// then starts over at `min_size` (a "round"); an improvement resets it to `min_size`.
+// Optionally (`node_doublings` > 0; off by default, no clear gain measured) bnb's node
+// limit grows likewise, as toulbar2's VNS doubles its discrepancy limit when a
+// round of sizes brings nothing: `node_limit` doubles after each fruitless round (at most
+// `node_doublings` times) and comes back to `node_limit` on an improvement, so a search
+// stuck with neighbourhoods too large for the limit searches them deeper instead of
+// repeating the same shallow dives. When
 // the neighbourhood is the whole problem and bnb completes, the result is proved optimal
 // (or the problem infeasible) and the search stops.
 //
@@ -43,6 +49,7 @@ class LnsSolver : public Solver {
     std::int64_t min_size = 4;        // smallest neighbourhood, variables (>= 1)
     std::int64_t max_size = 0;        // largest neighbourhood; 0 = every variable
     std::int64_t node_limit = 10000;  // bnb nodes per neighbourhood (>= 1)
+    std::int64_t node_doublings = 0;  // node limit doubles per fruitless round, this often
     std::int64_t rounds = -1;         // cap on rounds without improvement; -1 = none when a
                                       // limit is set (3 without)
     bool greedy_start = true;         // one greedy pass over the start first

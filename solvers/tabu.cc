@@ -14,9 +14,13 @@ const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
   static const OptionSchema<Options> schema = [] {
     OptionSchema<Options> s;
     s.integer("tenure_min", &Options::tenure_min,
-              "shortest tabu tenure: steps a left value stays forbidden (>= 0)", 0);
+              "shortest tabu tenure: steps a left value stays forbidden (>= 0); -1 = "
+              "max(2, mean domain size / 6)",
+              -1);
     s.integer("tenure_max", &Options::tenure_max,
-              "longest tabu tenure, steps (>= tenure_min); each move draws in between", 0);
+              "longest tabu tenure, steps (>= tenure_min); each move draws in between; -1 = "
+              "max(10, 0.7 x mean domain size)",
+              -1);
     s.integer("stall_moves", &Options::stall_moves,
               "steps without a new best before a perturbation; 0 = 100 x variables, >= 2000", 0);
     s.real("perturbation", &Options::perturbation,
@@ -32,6 +36,9 @@ const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
            "rank moves by hard_weight x hard + soft (a penalty); 0 = hard first; -1 = adaptive "
            "(strategic oscillation)",
            -1);
+    s.boolean("compound_moves", &Options::compound_moves,
+              "also try pair moves: when moving x breaks a hard binary constraint with y, move y "
+              "to a value allowed with x's new one (scored exactly)");
     s.boolean("stop_at_zero", &Options::stop_at_zero, "stop at a zero-cost feasible assignment");
     return s;
   }();
@@ -39,8 +46,13 @@ const OptionSchema<TabuSolver::Options>& TabuSolver::Options::schema() {
 }
 
 std::string TabuSolver::Options::validate() const {
-  if (tenure_min < 0) return "tenure_min must be >= 0, got " + std::to_string(tenure_min);
-  if (tenure_max < tenure_min) {
+  if (tenure_min < -1) {
+    return "tenure_min must be >= 0 (or -1 = automatic), got " + std::to_string(tenure_min);
+  }
+  if (tenure_max < -1) {
+    return "tenure_max must be >= 0 (or -1 = automatic), got " + std::to_string(tenure_max);
+  }
+  if (tenure_min >= 0 && tenure_max >= 0 && tenure_max < tenure_min) {
     return "tenure_max must be >= tenure_min (" + std::to_string(tenure_min) + "), got " +
            std::to_string(tenure_max);
   }

@@ -17,9 +17,22 @@
 // re-evaluation. Candidates are every variable when the table has at most
 // `scan_all_below` entries, else the variables in a violated constraint (soft ones count).
 //
+// Compound moves (`compound_moves`, on by default): when moving v to a breaks a hard binary
+// constraint with u (frequency assignment's duplex |f_v - f_u| = d, any hard table), the
+// pair move "v = a, u = b" for every b of u allowed with a is a candidate as well, scored by
+// the exact change of both (detail/compound_moves.h); without it, tied pairs can only move
+// one half at a time across infeasible ground. Only tight pairs count (hard constraints
+// allowing at most half the value pairs: loose ones seldom block a move, and their pair
+// moves crowded out better ones on warehouse location); a perturbation (below) that breaks
+// a tight pair repairs it with a random support. Problems without tight hard binary
+// constraints search exactly as without the option.
+//
 // Tabu: after v leaves value a, moving v back to a is forbidden for a tenure drawn
-// uniformly in [tenure_min, tenure_max] steps, unless the move would beat the best score
-// found (aspiration). The best admissible move is taken even when it worsens the score
+// uniformly in [tenure_min, tenure_max] steps (auto: max(2, D / 6) and max(10, 0.7 D) for a
+// mean domain size D: 2..10 up to 14 values, 7..31 at 44, where 2..10 let the search cycle
+// among the few dozen values of a frequency-assignment pair), unless the move would beat the best score
+// found (aspiration); a pair move is tabu when either of its values is, and after it both
+// variables' old values are tabu. The best admissible move is taken even when it worsens the score
 // (that is how tabu search leaves local minima); ties are broken at random.
 //
 // Stagnation: after `stall_moves` steps without a new best, the search perturbs the best
@@ -52,8 +65,8 @@ namespace sightline::solvers {
 class TabuSolver : public Solver {
  public:
   struct Options {
-    std::int64_t tenure_min = 2;   // shortest tabu tenure, steps (>= 0)
-    std::int64_t tenure_max = 10;  // longest tabu tenure, steps (>= tenure_min)
+    std::int64_t tenure_min = -1;  // shortest tabu tenure, steps (>= 0); -1 = auto
+    std::int64_t tenure_max = -1;  // longest tabu tenure, steps (>= tenure_min); -1 = auto
     std::int64_t stall_moves = 0;  // steps without a new best before a perturbation;
                                    // 0 = auto (100 x variables, at least 2000)
     double perturbation = 0.1;     // fraction of the variables a perturbation changes, (0, 1]
@@ -62,6 +75,7 @@ class TabuSolver : public Solver {
     bool stop_at_zero = true;              // stop at a zero-cost feasible assignment
     double hard_weight = -1;               // moves ranked by hard_weight x hard + soft; 0 = hard
                                            // first (lexicographic); -1 = adaptive
+    bool compound_moves = true;            // pair moves repairing hard binary constraints
 
     static const OptionSchema<Options>& schema();
     std::string validate() const;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "solvers/detail/compound_moves.h"
 #include "solvers/detail/move_table.h"
 #include "solvers/detail/random.h"
 #include "solvers/detail/start.h"
@@ -28,7 +30,24 @@ class TabuSearch {
         budget_(budget),
         random_(seed),
         table_(problem),
-        n_(problem.num_variables()) {}
+        n_(problem.num_variables()) {
+    // Tenure bounds (tabu.h): automatic ones follow the mean domain size.
+    double mean_domain = 0;
+    for (csp::VariableId v = 0; v < n_; ++v) {
+      mean_domain += static_cast<double>(problem.domain(v).size());
+    }
+    mean_domain /= static_cast<double>(std::max<std::size_t>(1, n_));
+    const auto auto_min = std::max<std::int64_t>(2, std::llround(mean_domain / 6));
+    const auto auto_max = std::max<std::int64_t>(10, std::llround(0.7 * mean_domain));
+    tenure_min_ = options.tenure_min >= 0
+                      ? options.tenure_min
+                      : (options.tenure_max >= 0 ? std::min(auto_min, options.tenure_max) : auto_min);
+    tenure_max_ = options.tenure_max >= 0 ? options.tenure_max : std::max(auto_max, tenure_min_);
+    if (options.compound_moves) {
+      compound_.emplace(problem);
+      if (compound_->num_pairs() == 0) compound_.reset();
+    }
+  }
 
   void run(std::span<const double> start, SolverResult& result) {
     prepare_start(problem_, start, best_);
@@ -87,6 +106,7 @@ class TabuSearch {
     }
     evaluations_ += table_.rebuild_work();
     table_.rebuild(values);
+    scratch_ = table_.values();
     return true;
   }
 
@@ -133,28 +153,57 @@ class TabuSearch {
     feasible_steps_ = infeasible_steps_ = 0;
   }
 
-  // Keeps the best admissible move of v's row in chosen_var_ / chosen_index_ / chosen (ties:
-  // one of them uniformly at random, by reservoir sampling over `ties`).
+  // Offers one candidate move (`partner` = kNone for a one-variable move) to the choice:
+  // kept if admissible and preferred, ties broken uniformly at random (reservoir sampling
+  // over `ties`).
+  void offer(const csp::Score& change, csp::VariableId v, std::uint32_t a, csp::VariableId partner,
+             std::uint32_t b, csp::Score& chosen, std::size_t& ties) {
+    if (chosen_var_ == kNone || prefer(change, chosen)) {
+      chosen = change;
+      ties = 1;
+    } else if (prefer(chosen, change) || random_.index(++ties) != 0) {
+      return;
+    }
+    chosen_var_ = v;
+    chosen_index_ = a;
+    chosen_partner_ = partner;
+    chosen_partner_index_ = b;
+  }
+
+  bool is_tabu(csp::VariableId v, std::uint32_t a) const {
+    return tabu_until_[table_.slot(v, a)] > iterations_;
+  }
+
+  // Offers every admissible move of v: its one-variable moves (v's row), and, where moving
+  // v breaks a hard binary constraint with a partner, the pair moves that repair it
+  // (compound_moves.h). A move is admissible when none of its (variable, value) is tabu, or
+  // when it would beat the best score found (aspiration).
   void consider_row(csp::VariableId v, const csp::Score& current, csp::Score& chosen,
                     std::size_t& ties) {
     const auto row = table_.row(v);
     const std::uint32_t here = table_.index_of(v);
     const csp::Score at_here = row[here];
-    const std::size_t first = table_.slot(v, 0);
     for (std::uint32_t a = 0; a < row.size(); ++a) {
       if (a == here) continue;
       const csp::Score change = row[a] - at_here;
-      const bool admissible = tabu_until_[first + a] <= iterations_ ||
-                              (current + change).better_than(best_score_);  // aspiration
-      if (!admissible) continue;
-      if (chosen_var_ == kNone || prefer(change, chosen)) {
-        chosen = change;
-        ties = 1;
-      } else if (prefer(chosen, change) || random_.index(++ties) != 0) {
-        continue;
+      if (is_tabu(v, a) && !(current + change).better_than(best_score_)) continue;
+      offer(change, v, a, kNone, 0, chosen, ties);
+    }
+    if (!compound_) return;
+    for (const CompoundMoves::Link& link : compound_->links(v)) {
+      const csp::VariableId partner = compound_->partner(link);
+      const std::uint32_t there = table_.index_of(partner);
+      for (std::uint32_t a : compound_->conflicts(link, there)) {
+        if (a == here) continue;
+        for (std::uint32_t b : compound_->supports(link, a)) {
+          const csp::Score change = compound_->change(table_, v, link, a, b, scratch_);
+          if ((is_tabu(v, a) || is_tabu(partner, b)) &&
+              !(current + change).better_than(best_score_)) {
+            continue;
+          }
+          offer(change, v, a, partner, b, chosen, ties);
+        }
       }
-      chosen_var_ = v;
-      chosen_index_ = a;
     }
   }
 
@@ -166,6 +215,7 @@ class TabuSearch {
       return;
     }
     chosen_var_ = kNone;
+    chosen_partner_ = kNone;
     csp::Score chosen;
     std::size_t ties = 0;
     if (scan_all_) {
@@ -177,7 +227,10 @@ class TabuSearch {
       chosen_var_ = static_cast<csp::VariableId>(random_.index(n_));
       chosen_index_ = static_cast<std::uint32_t>(random_.index(table_.domain_size(chosen_var_)));
     }
-    if (budget_.exhausted(evaluations_ + table_.move_work(chosen_var_), iterations_)) {
+    const bool pair = chosen_partner_ != kNone;
+    const std::uint64_t work =
+        table_.move_work(chosen_var_) + (pair ? table_.move_work(chosen_partner_) : 0);
+    if (budget_.exhausted(evaluations_ + work, iterations_)) {
       stop_ = budget_.reason();
       stopped_ = true;
       return;
@@ -187,14 +240,18 @@ class TabuSearch {
       ++iterations_;
       return;
     }
-    evaluations_ += table_.move_work(chosen_var_);
+    const std::uint32_t partner_left = pair ? table_.index_of(chosen_partner_) : 0;
+    evaluations_ += work;
     table_.move(chosen_var_, chosen_index_);
+    scratch_[chosen_var_] = table_.value_at(chosen_var_, chosen_index_);
+    if (pair) {
+      table_.move(chosen_partner_, chosen_partner_index_);
+      scratch_[chosen_partner_] = table_.value_at(chosen_partner_, chosen_partner_index_);
+    }
     ++iterations_;
     if (options_.hard_weight < 0) oscillate();
-    const auto tenure = static_cast<std::uint64_t>(
-        options_.tenure_min + static_cast<std::int64_t>(random_.index(static_cast<std::size_t>(
-                                  options_.tenure_max - options_.tenure_min + 1))));
-    tabu_until_[table_.slot(chosen_var_, left)] = iterations_ + tenure;
+    tabu_until_[table_.slot(chosen_var_, left)] = iterations_ + draw_tenure();
+    if (pair) tabu_until_[table_.slot(chosen_partner_, partner_left)] = iterations_ + draw_tenure();
     if (table_.score().better_than(best_score_)) {
       best_score_ = table_.score();
       best_ = table_.values();
@@ -202,6 +259,12 @@ class TabuSearch {
       best_seconds_ = budget_.elapsed_seconds();
       budget_.record_best(evaluations_, best_seconds_);
     }
+  }
+
+  std::uint64_t draw_tenure() {
+    return static_cast<std::uint64_t>(
+        tenure_min_ + static_cast<std::int64_t>(
+                          random_.index(static_cast<std::size_t>(tenure_max_ - tenure_min_ + 1))));
   }
 
   // From the best assignment, `strength` distinct random variables take random values.
@@ -214,7 +277,19 @@ class TabuSearch {
       std::swap(order_[k], order_[k + random_.index(n_ - k)]);
       const csp::VariableId v = order_[k];
       const csp::Domain& d = problem_.domain(v);
-      values[v] = d.value_at(random_.index(d.size()));
+      const auto a = static_cast<std::uint32_t>(random_.index(d.size()));
+      values[v] = d.value_at(a);
+      if (!compound_) continue;
+      // A tight pair broken by the new value is repaired at once (a random support of it):
+      // a perturbation that broke pairs would mostly be undone by the first moves.
+      for (const CompoundMoves::Link& link : compound_->links(v)) {
+        const csp::VariableId u = compound_->partner(link);
+        const csp::Domain& du = problem_.domain(u);
+        const auto b = static_cast<std::uint32_t>(*du.index_of(values[u]));
+        if (compound_->allowed(link, a, b)) continue;
+        const auto supports = compound_->supports(link, a);
+        if (!supports.empty()) values[u] = du.value_at(supports[random_.index(supports.size())]);
+      }
     }
     if (!rebuild(values)) return;
     std::fill(tabu_until_.begin(), tabu_until_.end(), 0);
@@ -235,6 +310,9 @@ class TabuSearch {
   Random random_;
   MoveTable table_;
   const std::size_t n_;
+  std::int64_t tenure_min_ = 2, tenure_max_ = 10;
+  std::optional<CompoundMoves> compound_;  // none: one-variable moves only
+  csp::Assignment scratch_;                // table_.values(), for CompoundMoves::change
   std::vector<std::uint64_t> tabu_until_;  // per (variable, value): step until which it is tabu
   std::vector<csp::VariableId> order_;
   bool scan_all_ = true;
@@ -242,6 +320,8 @@ class TabuSearch {
   std::uint64_t feasible_steps_ = 0, infeasible_steps_ = 0;
   csp::VariableId chosen_var_ = kNone;
   std::uint32_t chosen_index_ = 0;
+  csp::VariableId chosen_partner_ = kNone;  // kNone: a one-variable move
+  std::uint32_t chosen_partner_index_ = 0;
   csp::Assignment best_;
   csp::Score best_score_;
   std::uint64_t best_step_ = 0;
