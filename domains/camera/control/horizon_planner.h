@@ -39,9 +39,11 @@
 // millimetres of jerk, where any other way out once momentum has brought the camera there
 // is a velocity jump.
 // The cheapest usable candidate's first frame is returned, with its change of acceleration
-// clipped to max_jerk x dt when max_jerk > 0 and the clipped frame is usable too (a jerk
-// bound: a new cheapest candidate, the stop after the target say, is eased into instead of
-// switching the acceleration in one frame, which was the top 1% of jerk in a room); the rest is thrown away and the
+// clipped to max_jerk x dt when max_jerk > 0, nothing is at stake (the plan keeps every
+// predicted point in sight and meets no geometry) and the clipped frame is usable too (a
+// jerk bound for comfort: a new cheapest candidate, the stop after the target say, is eased
+// into instead of switching the acceleration in one frame, which made the top 1% of jerk in
+// a room); the rest is thrown away and the
 // plan is made again next frame. Candidates are priced cheapest-first on the terms without
 // queries, so most frames ask the geometry for one or two trajectories only.
 // No allocation per frame; the candidate set is fixed (kCandidates). Not thread-safe (it
