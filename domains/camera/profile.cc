@@ -88,6 +88,9 @@ std::string CameraProfile::validate() const {
   if (!std::isfinite(a.plan_seconds) || a.plan_seconds < 0 || a.plan_seconds > 5) {
     return "anticipation.plan_seconds must be in [0, 5] seconds";
   }
+  if (!std::isfinite(a.max_jerk) || a.max_jerk < 0 || a.max_jerk > 1e5) {
+    return "anticipation.max_jerk must be in [0, 100000] m/s^3";
+  }
   return "";
 }
 

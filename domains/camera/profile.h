@@ -90,6 +90,13 @@ struct Anticipation {
   // along them, room, framing at their end and jerk. 0 (thesis-default): the spring toward
   // the target, with cuts.smooth_escape's one-frame escapes if set. In [0, 5].
   double plan_seconds = 0;
+  // With plan_seconds > 0: the most the camera's acceleration may change per second, m/s^3
+  // (0: unbounded). Each frame's planned move is executed with its change of acceleration
+  // clipped to max_jerk x dt when nothing is at stake (the plan keeps every predicted point
+  // in sight and meets no geometry) and that move is usable too, so a new cheapest plan (the
+  // smooth stop instead of the target, a side offset) is eased into over a few frames
+  // instead of switching the acceleration in one. In [0, 100000].
+  double max_jerk = 0;
 
   bool operator==(const Anticipation&) const = default;
 };

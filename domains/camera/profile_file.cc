@@ -140,7 +140,8 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     }
   }
   if (const Spec* block = spec.find("anticipation")) {
-    block->check_keys({"lookahead", "horizon", "samples", "weight", "decay", "plan_seconds"});
+    block->check_keys({"lookahead", "horizon", "samples", "weight", "decay", "plan_seconds",
+                      "max_jerk"});
     Anticipation& a = p.anticipation;
     if (const Spec* v = block->find("lookahead")) {
       const std::string& text = v->as_string("a lookahead mode: none, motion or path");
@@ -161,6 +162,9 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     if (const Spec* v = block->find("decay")) a.decay = read_positive(*v, "anticipation.decay (seconds)");
     if (const Spec* v = block->find("plan_seconds")) {
       a.plan_seconds = read_in_range(*v, "anticipation.plan_seconds (seconds, 0 = off)", 0, 5);
+    }
+    if (const Spec* v = block->find("max_jerk")) {
+      a.max_jerk = read_in_range(*v, "anticipation.max_jerk (m/s^3, 0 = unbounded)", 0, 1e5);
     }
   }
   if (const Spec* block = spec.find("cuts")) {

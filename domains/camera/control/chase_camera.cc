@@ -54,7 +54,8 @@ ChaseCamera::ChaseCamera(const Scene& scene, const CameraProfile& profile,
       if (id != ids.frame_coherence) framing.push_back(id);
     }
     planner_.emplace(problem_, std::move(framing), options_.max_speed,
-                     options_.max_acceleration, profile.anticipation.plan_seconds);
+                     options_.max_acceleration, profile.anticipation.plan_seconds,
+                     profile.anticipation.max_jerk);
   }
   reset(scene.start_camera_position());
 }

@@ -38,7 +38,12 @@
 // wall's normal and loses its velocity into the wall: sliding along a wall costs a few
 // millimetres of jerk, where any other way out once momentum has brought the camera there
 // is a velocity jump.
-// The cheapest usable candidate's first frame is returned; the rest is thrown away and the
+// The cheapest usable candidate's first frame is returned, with its change of acceleration
+// clipped to max_jerk x dt when max_jerk > 0, nothing is at stake (the plan keeps every
+// predicted point in sight and meets no geometry) and the clipped frame is usable too (a
+// jerk bound for comfort: a new cheapest candidate, the stop after the target say, is eased
+// into instead of switching the acceleration in one frame, which made the top 1% of jerk in
+// a room); the rest is thrown away and the
 // plan is made again next frame. Candidates are priced cheapest-first on the terms without
 // queries, so most frames ask the geometry for one or two trajectories only.
 // No allocation per frame; the candidate set is fixed (kCandidates). Not thread-safe (it
@@ -74,7 +79,8 @@ class HorizonPlanner {
   // `problem` must outlive the planner. `framing_ids`: the soft constraints priced at a
   // goal (no sight lines, no frame coherence).
   HorizonPlanner(const CameraProblem& problem, std::vector<csp::ConstraintId> framing_ids,
-                 double max_speed, double max_acceleration, double plan_seconds);
+                 double max_speed, double max_acceleration, double plan_seconds,
+                 double max_jerk = 0);
 
   // The state after one frame (dt seconds) along the cheapest usable candidate, or nothing
   // when no candidate's first frame is usable. `target` moves at `target_velocity`.
@@ -89,7 +95,7 @@ class HorizonPlanner {
  private:
   const CameraProblem* problem_;
   std::vector<csp::ConstraintId> framing_ids_;
-  double max_speed_, max_acceleration_, plan_seconds_;
+  double max_speed_, max_acceleration_, plan_seconds_, max_jerk_;
   Eigen::Vector3d previous_offset_ = Eigen::Vector3d::Zero();
   int last_choice_ = 0;
 };

@@ -216,6 +216,7 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   EXPECT_FALSE(anticipating.cuts.backing_up);
   EXPECT_TRUE(anticipating.cuts.smooth_escape);
   EXPECT_GT(anticipating.anticipation.plan_seconds, 0);  // motion planned over the horizon
+  EXPECT_GT(anticipating.anticipation.max_jerk, 0);      // its changes of acceleration bounded
   CameraProblem cp(scene, anticipating);
   ASSERT_TRUE(cp.ids().future_visible.has_value());
   const csp::Constraint& c = cp.problem().constraint(*cp.ids().future_visible);
@@ -228,6 +229,7 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   const CameraProfile thesis = preset_profile("thesis-default");
   EXPECT_EQ(thesis.anticipation.lookahead, Lookahead::kNone);
   EXPECT_EQ(thesis.anticipation.plan_seconds, 0);
+  EXPECT_EQ(thesis.anticipation.max_jerk, 0);
   EXPECT_EQ(thesis.cuts, CutPolicy{});
 }
 
@@ -293,7 +295,7 @@ CameraProfile parse(const std::string& text) {
 TEST(CameraProfile, ReadsTheAnticipationAndCutsBlocks) {
   const CameraProfile p = parse(
       "anticipation: {lookahead: path, horizon: 1.5, samples: 6, weight: 4, decay: 0.8,\n"
-      "               plan_seconds: 0.6}\n"
+      "               plan_seconds: 0.6, max_jerk: 40}\n"
       "cuts: {leave_enclosed: false, backing_up: true, stuck: false, smooth_escape: true}\n");
   EXPECT_EQ(p.anticipation.lookahead, Lookahead::kPath);
   EXPECT_EQ(p.anticipation.horizon, 1.5);
@@ -301,6 +303,7 @@ TEST(CameraProfile, ReadsTheAnticipationAndCutsBlocks) {
   EXPECT_EQ(p.anticipation.weight, 4);
   EXPECT_EQ(p.anticipation.decay, 0.8);
   EXPECT_EQ(p.anticipation.plan_seconds, 0.6);
+  EXPECT_EQ(p.anticipation.max_jerk, 40);
   EXPECT_FALSE(p.cuts.leave_enclosed);
   EXPECT_TRUE(p.cuts.backing_up);
   EXPECT_FALSE(p.cuts.stuck);
@@ -321,6 +324,8 @@ TEST(CameraProfile, BadAnticipationValuesNameTheLineAndWhatWasExpected) {
       {"name: x\nanticipation:\n  plan_seconds: -0.5\n", "profile.yaml:3"},
       {"name: x\nanticipation:\n  plan_seconds: 6\n", "anticipation.plan_seconds"},
       {"name: x\nanticipation:\n  plan_seconds: soon\n", "anticipation.plan_seconds"},
+      {"name: x\nanticipation:\n  max_jerk: -1\n", "profile.yaml:3"},
+      {"name: x\nanticipation:\n  max_jerk: 1e6\n", "anticipation.max_jerk"},
       {"name: x\nanticipation:\n  wieght: 1\n", "wieght"},
       {"name: x\ncuts:\n  stuck: maybe\n", ""},
   };

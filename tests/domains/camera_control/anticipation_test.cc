@@ -9,7 +9,8 @@
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
 // pooled over each family of scenes; discretionary cuts (any reason but visibility-lost) at
 // or below 2 per minute of EACH scene. On each thesis scene the anticipating camera's jerk
-// p99 must not exceed the reactive camera's. Jerk p99 of both cameras is printed per scene
+// p99 must not exceed the reactive camera's. On the shipped scenes the path camera (preset
+// anticipating-path) is held to the same per-scene checks but the jerk one. Jerk p99 of both cameras is printed per scene
 // for the record (docs/CAMERA.md has the table).
 #include <gtest/gtest.h>
 
@@ -145,14 +146,15 @@ Judged run_reactive(const Scene& scene) {
   return j;
 }
 
-Judged run_anticipating(Scene& scene) {
-  scene.set_profile(camera::preset_profile("anticipating"), "preset anticipating");
+Judged run_anticipating(Scene& scene, const std::string& preset = "anticipating") {
+  scene.set_profile(camera::preset_profile(preset), "preset " + preset);
   camera::ChaseCameraOptions options;
   options.solver = "occlusion-octree";
   const experiments::CameraRun run = experiments::run_camera(scene, scene.profile(), options);
   // For a look at a failing run: SIGHTLINE_ANTICIPATION_TRACES=dir writes every trace there.
   if (const char* dir = std::getenv("SIGHTLINE_ANTICIPATION_TRACES")) {
-    experiments::write_trace_csv(std::string(dir) + "/" + scene.name() + ".csv", run.trace);
+    experiments::write_trace_csv(std::string(dir) + "/" + scene.name() + "-" + preset + ".csv",
+                                 run.trace);
   }
   return judge(scene, options, run);
 }
@@ -286,12 +288,22 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
     if (jerk_no_worse) {
       EXPECT_LE(a.jerk_p99, reactive_run.metrics.jerk_p99) << scene.name() << ": jerk p99";
     }
+    // The path camera (preset anticipating-path: the known future instead of a forecast,
+    // the same planner) is held to the same per-scene visibility, clearance, jump and
+    // discretionary-cut checks. Not to the jerk check: the jerk goal is the
+    // anticipating preset's, and the path camera misses it on crammed-doorway (docs/CAMERA.md).
+    Scene path_scene = camera::read_scene_file(path);
+    const Judged b = run_anticipating(path_scene, "anticipating-path");
+    EXPECT_EQ(b.hidden, 0) << scene.name() << " (path)";
+    EXPECT_EQ(b.too_close, 0) << scene.name() << " (path)";
+    EXPECT_EQ(b.unflagged, 0) << scene.name() << " (path)";
+    expect_few_discretionary_cuts(path_scene, b);
     cuts += a.cuts;
     seconds += a.seconds;
     std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  "
-                "jerk p99 reactive %.0f anticipating %.0f m/s^3\n",
+                "jerk p99 reactive %.0f anticipating %.0f m/s^3; path: cuts %d jerk p99 %.0f\n",
                 scene.name().c_str(), a.seconds, reactive_run.metrics.cuts, a.cuts,
-                reactive_run.metrics.jerk_p99, a.jerk_p99);
+                reactive_run.metrics.jerk_p99, a.jerk_p99, b.cuts, b.jerk_p99);
   }
   const double per_minute = cuts / (seconds / 60);
   std::printf("[anticipation] scenes%s: %d cuts in %.0f s = %.2f per minute\n", folder.c_str(),
