@@ -159,8 +159,11 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     const Eigen::Vector3d offset = i == kStop ? Eigen::Vector3d(here - target) : offsets[u];
     cheap[u] = framing + kJerkPrice * jerk + kSwitchPrice * (offset - previous_offset_).norm();
   }
+  // Ties (a duplicate of the previous choice, mirror offsets) go to the lower index, so the
+  // choice never depends on how the sort orders equal keys.
   std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return cheap[static_cast<std::size_t>(a)] < cheap[static_cast<std::size_t>(b)];
+    const double ca = cheap[static_cast<std::size_t>(a)], cb = cheap[static_cast<std::size_t>(b)];
+    return ca < cb || (ca == cb && a < b);
   });
 
   double best_cost = std::numeric_limits<double>::infinity();

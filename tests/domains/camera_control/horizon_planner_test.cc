@@ -90,7 +90,8 @@ TEST(HorizonPlanner, ReachesAStillTargetFromRestSmoothlyAndWithinTheSpeedBound) 
   // max_speed, with the acceleration changing by at most a minimum-jerk quintic's first
   // jerk over 3 m in 0.75 s (60 x 3 / 0.75^3 = 427 m/s^3) per second.
   Scene scene("still", {}, {}, {}, Trajectory({{0, {0, 0, 0}, 0}, {10, {0, 0, 0}, 0}}));
-  CameraProblem cp(scene, preset_profile("anticipating"));
+  const CameraProfile profile = preset_profile("anticipating");  // CameraProblem keeps a pointer
+  CameraProblem cp(scene, profile);
   constexpr double kMaxSpeed = 8.0, kPlanSeconds = 0.75;
   HorizonPlanner planner(cp, framing_ids(cp), kMaxSpeed, 15.0, kPlanSeconds);
   const double dt = 1.0 / 60;
@@ -120,7 +121,8 @@ TEST(HorizonPlanner, FirstFramesStayClearOfAWallAndKeepTheLookAtPointInSight) {
   std::vector<SolidBox> solids = {{"wall", {lo, hi}, {}}};
   Scene scene("wall", std::move(solids), {}, {},
               Trajectory({{0, {2.5, 0, 0}, 0}, {10, {2.5, 0, 0}, 0}}));
-  CameraProblem cp(scene, preset_profile("anticipating"));
+  const CameraProfile profile = preset_profile("anticipating");  // CameraProblem keeps a pointer
+  CameraProblem cp(scene, profile);
   HorizonPlanner planner(cp, framing_ids(cp), 8.0, 15.0, 0.75);
   const double dt = 1.0 / 60;
   const double r = cp.profile().clearance_radius;
@@ -150,7 +152,8 @@ TEST(HorizonPlanner, BrakesBeforeASideWallItIsMovingAt) {
   std::vector<SolidBox> solids = {{"side", {lo, hi}, {}}};
   Scene scene("side", std::move(solids), {}, {},
               Trajectory({{0, {0, 0, 0}, 0}, {10, {0, 0, 0}, 0}}));
-  CameraProblem cp(scene, preset_profile("anticipating"));
+  const CameraProfile profile = preset_profile("anticipating");  // CameraProblem keeps a pointer
+  CameraProblem cp(scene, profile);
   HorizonPlanner planner(cp, framing_ids(cp), 8.0, 15.0, 0.75);
   const double dt = 1.0 / 60;
   const double r = cp.profile().clearance_radius;
