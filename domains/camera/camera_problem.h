@@ -55,6 +55,9 @@ class CameraProblem {
   // profile that does not validate() and csp::InputError (at the entry's location) for an
   // extra that does not build.
   CameraProblem(const Scene& scene, const CameraProfile& profile);
+  // A temporary would dangle (the problem keeps pointers): refused at compile time.
+  CameraProblem(const Scene&&, const CameraProfile&) = delete;
+  CameraProblem(const Scene&, const CameraProfile&&) = delete;
   // Same, with the scene's own profile.
   explicit CameraProblem(const Scene& scene) : CameraProblem(scene, scene.profile()) {}
 

@@ -85,6 +85,9 @@ class ChaseCamera : public CameraController {
   // unknown solver or bad options, std::invalid_argument for bad controller options or a
   // solver that cannot work on camera problems.
   ChaseCamera(const Scene& scene, const CameraProfile& profile, ChaseCameraOptions options);
+  // A temporary would dangle: refused at compile time.
+  ChaseCamera(const Scene&&, const CameraProfile&, ChaseCameraOptions) = delete;
+  ChaseCamera(const Scene&, const CameraProfile&&, ChaseCameraOptions) = delete;
   ~ChaseCamera() override;
   std::string name() const override { return options_.solver; }
 
