@@ -189,6 +189,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     // And sight there, of the look-at point on its way to the first predicted one (a
     // sight line the character's next steps will cut is lost before any frame can react).
     for (int m : {2, 4, 8}) {
+      if (!(cost < best_cost)) break;  // costs only grow: it cannot win any more
       const double t = m * dt;
       const Eigen::Vector3d x = q.position(t);
       if (geometry_now.clearance(x, radius + 1e-6) < radius ||
