@@ -15,27 +15,17 @@
 #include "domains/camera/constraints/future_visibility.h"
 #include "domains/camera/motion_prediction.h"
 #include "domains/camera/profile_file.h"
+#include "experiments/independent_check.h"
 
 namespace sightline::camera {
 namespace {
 
 using Eigen::Vector3d;
 
+// The test's sight-line judge, independent of the camera domain's queries
+// (experiments/independent_check.h), for one box.
 bool slab_meets(const Vector3d& a, const Vector3d& b, const Vector3d& lo, const Vector3d& hi) {
-  double enter = 0, exit = 1;
-  for (int i = 0; i < 3; ++i) {
-    const double d = b[i] - a[i];
-    if (d == 0) {
-      if (a[i] < lo[i] || a[i] > hi[i]) return false;
-      continue;
-    }
-    double t0 = (lo[i] - a[i]) / d, t1 = (hi[i] - a[i]) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    enter = std::max(enter, t0);
-    exit = std::min(exit, t1);
-    if (enter > exit) return false;
-  }
-  return true;
+  return experiments::segment_blocked({{lo, hi}}, a, b);
 }
 
 bool inside(const Vector3d& p, const Vector3d& lo, const Vector3d& hi) {

@@ -2,16 +2,16 @@
 // backing-up cuts off, smooth escapes) on every shipped scene and on seeded generated ones
 // (switchbacks of random widths, random crossings by movers), judged independently.
 //
-// Visibility and clearance are checked here without the camera's queries: static boxes with
-// experiments/independent_check.h, movers with the test's own slab test against boxes
-// interpolated from the movers' keyframes in the test. Never the controller's flag. Every
+// Visibility and clearance are checked here without the camera's queries: static boxes and
+// movers (interpolated from their keyframes there) with experiments/independent_check.h,
+// through the metrics' MetricsInput. Never the controller's flag. Every
 // move longer than max_speed x dt must carry the cut flag. Cuts are counted from the trace's
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
 // pooled over each family of scenes; discretionary cuts (any reason but visibility-lost) at
 // or below 2 per minute of EACH scene. On each thesis scene the anticipating camera's jerk
 // p99 must not exceed the reactive camera's. On the shipped scenes the path camera (preset
-// anticipating-path) is held to the same per-scene checks but the jerk one. Jerk p99 of both cameras is printed per scene
-// for the record (docs/CAMERA.md has the table).
+// anticipating-path) is held to the same per-scene checks but the jerk one. Jerk p99 of both
+// cameras is printed per scene for the record (docs/CAMERA.md has the table).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,55 +36,6 @@ namespace {
 using camera::Scene;
 using Eigen::Vector3d;
 
-// --- the test's own geometry: no code shared with domains/camera ------------------------
-
-// Closed segment a-b against a closed box, by slabs.
-bool segment_meets_box(const Vector3d& a, const Vector3d& b, const Vector3d& lo,
-                       const Vector3d& hi) {
-  double enter = 0, exit = 1;
-  for (int i = 0; i < 3; ++i) {
-    const double d = b[i] - a[i];
-    if (std::abs(d) < 1e-15) {
-      if (a[i] < lo[i] || a[i] > hi[i]) return false;
-      continue;
-    }
-    double t0 = (lo[i] - a[i]) / d, t1 = (hi[i] - a[i]) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    enter = std::max(enter, t0);
-    exit = std::min(exit, t1);
-    if (enter > exit) return false;
-  }
-  return true;
-}
-
-double distance_to_box(const Vector3d& p, const Vector3d& lo, const Vector3d& hi) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = std::max({lo[i] - p[i], 0.0, p[i] - hi[i]});
-    s += d * d;
-  }
-  return std::sqrt(s);
-}
-
-// A mover's box at time t from its keyframes, interpolated here.
-void mover_box_at(const camera::Mover& m, double t, Vector3d* lo, Vector3d* hi) {
-  const auto& path = m.path();
-  Vector3d p = path.front().position;
-  if (t >= path.back().t) {
-    p = path.back().position;
-  } else {
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      if (t >= path[i].t && t <= path[i + 1].t) {
-        const double u = (t - path[i].t) / (path[i + 1].t - path[i].t);
-        p = path[i].position + u * (path[i + 1].position - path[i].position);
-        break;
-      }
-    }
-  }
-  *lo = p - Vector3d(m.size().x() / 2, 0, m.size().z() / 2);
-  *hi = p + Vector3d(m.size().x() / 2, m.size().y(), m.size().z() / 2);
-}
-
 struct Judged {
   int frames = 0, hidden = 0, too_close = 0, unflagged = 0, cuts = 0;
   // Cuts for any reason but "visibility-lost" (the forced last resort): stuck, leaving an
@@ -99,26 +50,24 @@ struct Judged {
 
 Judged judge(const Scene& scene, const camera::ChaseCameraOptions& options,
              const experiments::CameraRun& run) {
-  std::vector<experiments::SolidBox> boxes;
-  for (const auto& s : scene.solids()) boxes.push_back({s.box.min, s.box.max});
   const double r = scene.profile().clearance_radius;
   const double max_step = options.max_speed / scene.frame_rate();
+  // The metrics' independent geometry: static boxes, and movers interpolated from their
+  // keyframes by experiments/independent_check, not by the camera domain.
+  const experiments::MetricsInput input =
+      experiments::metrics_input(scene, scene.profile(), max_step);
+  std::vector<experiments::SolidBox> movers_now;
   Judged j;
   j.frames = static_cast<int>(run.trace.size());
   j.seconds = run.trace.back().t - run.trace.front().t;
   j.jerk_p99 = run.metrics.jerk_p99;
   for (std::size_t i = 0; i < run.trace.size(); ++i) {
     const auto& row = run.trace[i];
-    bool hidden = experiments::segment_blocked(boxes, row.camera, row.target);
-    double clearance = experiments::distance_to_geometry(boxes, row.camera);
-    bool swallowed = false;  // the look-at point inside a mover: no camera can see it
-    for (const camera::Mover& m : scene.movers()) {
-      Vector3d lo, hi;
-      mover_box_at(m, row.t, &lo, &hi);
-      hidden = hidden || segment_meets_box(row.camera, row.target, lo, hi);
-      clearance = std::min(clearance, distance_to_box(row.camera, lo, hi));
-      swallowed = swallowed || distance_to_box(row.target, lo, hi) == 0;
-    }
+    const bool hidden = experiments::segment_blocked(input, row.camera, row.target, row.t);
+    const double clearance = experiments::distance_to_geometry(input, row.camera, row.t);
+    // The look-at point inside a mover: no camera can see it.
+    experiments::moving_boxes_at(input.movers, row.t, movers_now);
+    const bool swallowed = experiments::distance_to_geometry(movers_now, row.target) == 0;
     if (swallowed) ++j.swallowed;
     if (hidden && !swallowed && j.hidden++ < 3) {
       ADD_FAILURE() << scene.name() << ": hidden at t=" << row.t;
@@ -161,10 +110,47 @@ Judged run_anticipating(Scene& scene, const std::string& preset = "anticipating"
 
 // The issue's limit on discretionary cuts, per scene: at most 2 per minute OF THAT SCENE, so a
 // scene shorter than 30 s may have none (the count is whole: cuts <= 2 x minutes).
-void expect_few_discretionary_cuts(const Scene& scene, const Judged& a) {
+// With the independent checks: no hidden frame, none within clearance, no unflagged jump.
+void expect_clean(const Scene& scene, const Judged& a, const std::string& camera = "") {
+  EXPECT_EQ(a.hidden, 0) << scene.name() << camera;
+  EXPECT_EQ(a.too_close, 0) << scene.name() << camera;
+  EXPECT_EQ(a.unflagged, 0) << scene.name() << camera;
   EXPECT_LE(a.discretionary, 2.0 * a.seconds / 60.0)
-      << scene.name() << ": " << a.discretionary << " discretionary cuts in " << a.seconds
-      << " s";
+      << scene.name() << camera << ": " << a.discretionary << " discretionary cuts in "
+      << a.seconds << " s";
+}
+
+// Every cut of a family of scenes, pooled.
+struct CutTally {
+  int cuts = 0;
+  double seconds = 0;
+  void add(const Judged& a) {
+    cuts += a.cuts;
+    seconds += a.seconds;
+  }
+  double per_minute() const { return cuts / (seconds / 60); }
+  void print(const std::string& family) const {
+    std::printf("[anticipation] %s: %d cuts in %.0f s = %.2f per minute\n", family.c_str(), cuts,
+                seconds, per_minute());
+  }
+};
+
+// The reactive and the anticipating camera on each of `scenes`, the latter checked scene by
+// scene; returns its cuts per minute pooled over them.
+double run_generated(const std::string& family, const std::vector<Scene>& scenes) {
+  CutTally tally;
+  for (Scene scene : scenes) {
+    const Judged reactive = run_reactive(scene);  // static boxes only in its metrics
+    const Judged a = run_anticipating(scene);
+    expect_clean(scene, a);
+    tally.add(a);
+    std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
+                "reactive %.0f anticipating %.0f m/s^3  look-at inside a mover: %d frames\n",
+                scene.name().c_str(), a.seconds, reactive.cuts, a.cuts, reactive.jerk_p99,
+                a.jerk_p99, a.swallowed);
+  }
+  tally.print(family);
+  return tally.per_minute();
 }
 
 // --- seeded generators --------------------------------------------------------------------
@@ -271,8 +257,7 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
   const auto files = experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) +
                                               "/experiments/scenes" + folder);
   EXPECT_FALSE(files.empty());
-  int cuts = 0;
-  double seconds = 0;
+  CutTally tally;
   for (const std::string& path : files) {
     Scene reactive_scene = camera::read_scene_file(path);
     camera::ChaseCameraOptions options;
@@ -281,10 +266,7 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
         experiments::run_camera(reactive_scene, reactive_scene.profile(), options);
     Scene scene = camera::read_scene_file(path);
     const Judged a = run_anticipating(scene);
-    EXPECT_EQ(a.hidden, 0) << scene.name();
-    EXPECT_EQ(a.too_close, 0) << scene.name();
-    EXPECT_EQ(a.unflagged, 0) << scene.name();
-    expect_few_discretionary_cuts(scene, a);
+    expect_clean(scene, a);
     if (jerk_no_worse) {
       EXPECT_LE(a.jerk_p99, reactive_run.metrics.jerk_p99) << scene.name() << ": jerk p99";
     }
@@ -294,21 +276,15 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
     // anticipating preset's, and the path camera misses it on crammed-doorway (docs/CAMERA.md).
     Scene path_scene = camera::read_scene_file(path);
     const Judged b = run_anticipating(path_scene, "anticipating-path");
-    EXPECT_EQ(b.hidden, 0) << scene.name() << " (path)";
-    EXPECT_EQ(b.too_close, 0) << scene.name() << " (path)";
-    EXPECT_EQ(b.unflagged, 0) << scene.name() << " (path)";
-    expect_few_discretionary_cuts(path_scene, b);
-    cuts += a.cuts;
-    seconds += a.seconds;
+    expect_clean(path_scene, b, " (path)");
+    tally.add(a);
     std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  "
                 "jerk p99 reactive %.0f anticipating %.0f m/s^3; path: cuts %d jerk p99 %.0f\n",
                 scene.name().c_str(), a.seconds, reactive_run.metrics.cuts, a.cuts,
                 reactive_run.metrics.jerk_p99, a.jerk_p99, b.cuts, b.jerk_p99);
   }
-  const double per_minute = cuts / (seconds / 60);
-  std::printf("[anticipation] scenes%s: %d cuts in %.0f s = %.2f per minute\n", folder.c_str(),
-              cuts, seconds, per_minute);
-  return per_minute;
+  tally.print("scenes" + folder);
+  return tally.per_minute();
 }
 
 TEST(AnticipatingCamera, OnEveryThesisSceneKeepsTheLookAtVisibleClearAndCutsRarely) {
@@ -322,49 +298,15 @@ TEST(AnticipatingCamera, OnTheIssuesMoverScenesKeepsTheLookAtVisibleClearAndCuts
 }
 
 TEST(AnticipatingCamera, OnSeededSwitchbacksKeepsTheLookAtVisibleClearAndCutsRarely) {
-  int cuts = 0;
-  double seconds = 0;
-  for (std::uint64_t seed = 101; seed <= 112; ++seed) {
-    Scene scene = switchback(seed);
-    const Judged reactive = run_reactive(scene);  // static boxes only in its metrics
-    const Judged a = run_anticipating(scene);
-    EXPECT_EQ(a.hidden, 0) << scene.name();
-    EXPECT_EQ(a.too_close, 0) << scene.name();
-    EXPECT_EQ(a.unflagged, 0) << scene.name();
-    expect_few_discretionary_cuts(scene, a);
-    cuts += a.cuts;
-    seconds += a.seconds;
-    std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
-                "reactive %.0f anticipating %.0f m/s^3\n",
-                scene.name().c_str(), a.seconds, reactive.cuts, a.cuts, reactive.jerk_p99,
-                a.jerk_p99);
-  }
-  std::printf("[anticipation] switchbacks: %d cuts in %.0f s = %.2f per minute\n", cuts,
-              seconds, cuts / (seconds / 60));
-  EXPECT_LE(cuts / (seconds / 60), 2.0);
+  std::vector<Scene> scenes;
+  for (std::uint64_t seed = 101; seed <= 112; ++seed) scenes.push_back(switchback(seed));
+  EXPECT_LE(run_generated("switchbacks", scenes), 2.0);
 }
 
 TEST(AnticipatingCamera, OnSeededCrossingsKeepsTheLookAtVisibleClearAndCutsRarely) {
-  int cuts = 0;
-  double seconds = 0;
-  for (std::uint64_t seed = 201; seed <= 212; ++seed) {
-    Scene scene = crossings(seed);
-    const Judged reactive = run_reactive(scene);  // static boxes only in its metrics
-    const Judged a = run_anticipating(scene);
-    EXPECT_EQ(a.hidden, 0) << scene.name();
-    EXPECT_EQ(a.too_close, 0) << scene.name();
-    EXPECT_EQ(a.unflagged, 0) << scene.name();
-    expect_few_discretionary_cuts(scene, a);
-    cuts += a.cuts;
-    seconds += a.seconds;
-    std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
-                "reactive %.0f anticipating %.0f m/s^3\n",
-                scene.name().c_str(), a.seconds, reactive.cuts, a.cuts, reactive.jerk_p99,
-                a.jerk_p99);
-  }
-  std::printf("[anticipation] crossings: %d cuts in %.0f s = %.2f per minute\n", cuts, seconds,
-              cuts / (seconds / 60));
-  EXPECT_LE(cuts / (seconds / 60), 2.0);
+  std::vector<Scene> scenes;
+  for (std::uint64_t seed = 201; seed <= 212; ++seed) scenes.push_back(crossings(seed));
+  EXPECT_LE(run_generated("crossings", scenes), 2.0);
 }
 
 // The `mover-scenes` branch's generators (experiments/scene_generator.h), written
@@ -372,31 +314,16 @@ TEST(AnticipatingCamera, OnSeededCrossingsKeepsTheLookAtVisibleClearAndCutsRarel
 // 2.5-4 m high, and crossings with people and vehicles (4-12 m/s). Seeds never looked at
 // while the camera was built.
 TEST(AnticipatingCamera, OnTheSharedGeneratorsScenesKeepsTheLookAtVisibleClearAndCutsRarely) {
-  int cuts = 0;
-  double seconds = 0;
+  std::vector<Scene> scenes;
   for (std::uint64_t seed = 1001; seed <= 1008; ++seed) {
     experiments::SwitchbackOptions so;
     so.seed = seed;
     experiments::CrossingOptions co;
     co.seed = seed;
-    for (Scene scene : {experiments::generate_switchback(so), experiments::generate_crossings(co)}) {
-      const Judged reactive = run_reactive(scene);
-      const Judged a = run_anticipating(scene);
-      EXPECT_EQ(a.hidden, 0) << scene.name();
-      EXPECT_EQ(a.too_close, 0) << scene.name();
-      EXPECT_EQ(a.unflagged, 0) << scene.name();
-      expect_few_discretionary_cuts(scene, a);
-      cuts += a.cuts;
-      seconds += a.seconds;
-      std::printf("[anticipation] %-16s %5.1f s  cuts reactive %d anticipating %d  jerk p99 "
-                  "reactive %.0f anticipating %.0f m/s^3  look-at inside a mover: %d frames\n",
-                  scene.name().c_str(), a.seconds, reactive.cuts, a.cuts, reactive.jerk_p99,
-                  a.jerk_p99, a.swallowed);
-    }
+    scenes.push_back(experiments::generate_switchback(so));
+    scenes.push_back(experiments::generate_crossings(co));
   }
-  std::printf("[anticipation] generated (shared generators): %d cuts in %.0f s = %.2f per "
-              "minute\n", cuts, seconds, cuts / (seconds / 60));
-  EXPECT_LE(cuts / (seconds / 60), 2.0);
+  EXPECT_LE(run_generated("generated (shared generators)", scenes), 2.0);
 }
 
 }  // namespace

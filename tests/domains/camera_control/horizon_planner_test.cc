@@ -15,6 +15,7 @@
 #include "domains/camera/camera_problem.h"
 #include "domains/camera/control/horizon_planner.h"
 #include "domains/camera/profile_file.h"
+#include "experiments/independent_check.h"
 #include "tests/count_allocations.h"
 
 namespace sightline::camera {
@@ -27,32 +28,15 @@ std::vector<csp::ConstraintId> framing_ids(const CameraProblem& cp) {
   return {ids.height, ids.distance, ids.orientation};
 }
 
-// Closed segment a-b against a closed box, by slabs (the test's own).
+// The test's geometry judge, independent of the camera domain's queries
+// (experiments/independent_check.h), for one box.
 bool segment_meets_box(const Vector3d& a, const Vector3d& b, const Vector3d& lo,
                        const Vector3d& hi) {
-  double enter = 0, exit = 1;
-  for (int i = 0; i < 3; ++i) {
-    const double d = b[i] - a[i];
-    if (std::abs(d) < 1e-15) {
-      if (a[i] < lo[i] || a[i] > hi[i]) return false;
-      continue;
-    }
-    double t0 = (lo[i] - a[i]) / d, t1 = (hi[i] - a[i]) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    enter = std::max(enter, t0);
-    exit = std::min(exit, t1);
-    if (enter > exit) return false;
-  }
-  return true;
+  return experiments::segment_blocked({{lo, hi}}, a, b);
 }
 
 double distance_to_box(const Vector3d& p, const Vector3d& lo, const Vector3d& hi) {
-  double s = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = std::max({lo[i] - p[i], 0.0, p[i] - hi[i]});
-    s += d * d;
-  }
-  return std::sqrt(s);
+  return experiments::distance_to_geometry({{lo, hi}}, p);
 }
 
 TEST(HorizonPlanner, PlansEveryFrameWithoutAllocating) {
