@@ -29,6 +29,7 @@ namespace sightline::experiments {
 namespace {
 
 using testing::ScratchDir;
+using testing::kTinySuite;
 using testing::read_text;
 using testing::without_timing;
 namespace fs = std::filesystem;
@@ -93,19 +94,6 @@ std::map<std::string, Written> finished_runs(const std::string& out) {
   }
   return files;
 }
-
-// 2 scenes x 2 camera solvers, plus 2 toy problems x 2 solvers: 8 deterministic runs.
-const char* kTinySuite = R"(name: tiny
-camera:
-  scenes: [scenes/*.yaml]
-  solvers:
-    - occlusion-octree
-    - {label: bourne-published, solver: bourne-octree, controller: {visibility_guard: false},
-       area_adaptation: false}
-problems:
-  instances: [{nqueens: [6, 8]}]
-  solvers: [sls, bnb]
-)";
 
 RunnerOptions local(const std::string& out, std::size_t max_new_runs = 0) {
   RunnerOptions o;

@@ -18,22 +18,10 @@ namespace sightline::experiments {
 namespace {
 
 using testing::ScratchDir;
+using testing::kTinySuite;
 using testing::read_text;
 using testing::without_timing;
 namespace fs = std::filesystem;
-
-// 2 scenes x 2 camera solvers, plus 2 toy problems x 2 solvers: 8 runs.
-const char* kTinySuite = R"(name: tiny
-camera:
-  scenes: [scenes/*.yaml]
-  solvers:
-    - occlusion-octree
-    - {label: bourne-published, solver: bourne-octree, controller: {visibility_guard: false},
-       area_adaptation: false}
-problems:
-  instances: [{nqueens: [6, 8]}]
-  solvers: [sls, bnb]
-)";
 
 RunnerOptions options_for(const std::string& out, std::size_t max_new_runs = 0) {
   RunnerOptions o;

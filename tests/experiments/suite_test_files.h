@@ -1,6 +1,6 @@
 // Small files for the suite tests: a scratch directory with two short scenes (a wall to
-// hide behind, a room with a door), a helper to write a suite next to them, and one to read
-// a file back.
+// hide behind, a room with a door), a helper to write a suite next to them, a tiny suite
+// over them, and one to read a file back.
 #pragma once
 
 #include <filesystem>
@@ -58,6 +58,20 @@ trajectory:
  private:
   std::filesystem::path path_;
 };
+
+// A suite over the scratch directory's two scenes: 2 scenes x 2 camera solvers, plus 2 toy
+// problems x 2 solvers: 8 deterministic runs.
+inline constexpr const char* kTinySuite = R"(name: tiny
+camera:
+  scenes: [scenes/*.yaml]
+  solvers:
+    - occlusion-octree
+    - {label: bourne-published, solver: bourne-octree, controller: {visibility_guard: false},
+       area_adaptation: false}
+problems:
+  instances: [{nqueens: [6, 8]}]
+  solvers: [sls, bnb]
+)";
 
 inline std::string read_text(const std::string& path) {
   std::ifstream in(path);
