@@ -210,6 +210,21 @@ std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d&
   return best;
 }
 
+double ChaseCamera::shot_cost(const Eigen::Vector3d& p) const {
+  // A cut pays no frame coherence: the shot is priced on framing and sight alone.
+  const csp::Problem& problem = problem_.problem();
+  const double values[3] = {p.x(), p.y(), p.z()};
+  double sum = 0;
+  for (const auto* ids : {&cheap_ids_, &sighted_ids_}) {
+    for (csp::ConstraintId id : *ids) {
+      if (id == problem_.ids().frame_coherence) continue;
+      const csp::Constraint& c = problem.constraint(id);
+      if (!c.is_hard()) sum += c.weight() * c.violation(std::span<const double>(values, 3));
+    }
+  }
+  return sum;
+}
+
 std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look) const {
   // Rings around the look-at point, nearest first, from behind the character (toward the
   // camera) round to the front, at and above the look-at height: the first usable one.
@@ -352,10 +367,21 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         cut_to(target, CutReason::kStuck);
       }
     } else {
-      // Forced, whatever the shot's age. When the solver found nothing usable either (a
-      // vehicle right between camera and character), the escape profiles look close in.
-      if (escapes && !usable(target, look)) {
-        if (const auto close = close_in(look)) target = *close;
+      // Forced, whatever the shot's age. The escape profiles also search a new shot around
+      // the ideal position, as the stuck cut does, and cut to the better framed of the two
+      // (framing and sight, no frame coherence: see shot_cost): the solver's target near
+      // the old camera, left behind, is a jump of a metre or two that the next frames lose
+      // again (a character running round corners faster than the camera can follow: a cut
+      // every frame or two). When neither is usable (a vehicle right between camera and
+      // character), they look close in.
+      if (escapes) {
+        const Eigen::Vector3d shot = solve_for_new_shot(character, dt, look);
+        if (usable(shot, look) &&
+            (!usable(target, look) || shot_cost(shot) < shot_cost(target))) {
+          target = shot;
+        } else if (!usable(target, look)) {
+          if (const auto close = close_in(look)) target = *close;
+        }
       }
       cut_to(target, CutReason::kVisibilityLost);
     }

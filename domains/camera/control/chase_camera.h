@@ -121,6 +121,8 @@ class ChaseCamera : public CameraController {
   // For a forced cut the solver could not place: the first usable spot on rings 1-3 m
   // around the look-at point (escape profiles only), if any.
   std::optional<Eigen::Vector3d> close_in(const Eigen::Vector3d& look) const;
+  // This frame's soft cost of a shot to cut to: framing and sight, without frame coherence.
+  double shot_cost(const Eigen::Vector3d& p) const;
   // `step` is where the spring would have gone.
   std::optional<Eigen::Vector3d> smooth_escape(const Eigen::Vector3d& look,
                                                const Eigen::Vector3d& step, double dt) const;
