@@ -91,6 +91,14 @@ void walk_level(const LevelWalkArgs& args) {
   if (nav.anchors > 0) {
     std::cout << "  the region walked holds " << nav.region_anchors << " of the map's "
               << nav.anchors << " spawn points\n";
+    // Maps of islands (delta, czest2ctf, cbctf1, oa_ctf2, oa_koth2 ...): say why the walks
+    // see so little of them, rather than leave the user to guess at a bug.
+    if (2 * nav.region_anchors < nav.anchors) {
+      std::cout << "  note: the other " << nav.anchors - nav.region_anchors
+                << " spawn points are off it, on floors not reachable on foot from it (jump pads, "
+                   "teleporters, lifts, jumps: walks take none of them), so every walk "
+                   "keeps to this part of the map\n";
+    }
   }
   if (!nav.note.empty()) std::cout << "  note: " << nav.note << "\n";
 
