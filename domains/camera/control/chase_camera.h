@@ -21,9 +21,12 @@
 //   keeps the look-at point visible and crosses nothing, if it is cheaper than staying (or
 //   staying loses sight). Only then does it stay, and after
 //   stuck_seconds cut (if cuts.stuck), or cut because the look-at point is lost. A game
-//   camera slides along the wall, rises or pulls in before it pops. If a forced cut has no
-//   usable target from the solver either, these profiles cut to the first usable spot on
-//   rings 1-3 m around the look-at point (close_in) rather than stay hidden.
+//   camera slides along the wall, rises or pulls in before it pops. A forced cut of these
+//   profiles goes to the better framed (shot_cost) of the solver's target near the camera
+//   and a new shot searched around the ideal position, so that a camera left behind does
+//   not cut a metre or two and lose sight again next frame; if neither is usable, to the
+//   first usable spot on rings 1-3 m around the look-at point (close_in) rather than stay
+//   hidden.
 //   With anticipation.plan_seconds > 0 the spring and the one-frame escape give way to a
 //   motion planned over the prediction horizon (horizon_planner.h): each frame the camera
 //   follows the first frame of the cheapest smooth trajectory toward the low-passed target
