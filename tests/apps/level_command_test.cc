@@ -105,4 +105,23 @@ TEST_F(LevelWalkCommand, BadInputIsAMessageAndStatusTwo) {
   }
 }
 
+// Maps of islands joined by jump pads and teleporters (delta: 8 of its 41 spawn points on the
+// floor walked) get a note saying why the walks see so little of them; a map walked whole
+// (aggressor: 9 of 10) gets none. Skipped where Debian's OpenArena data is not installed.
+TEST_F(LevelWalkCommand, SaysWhyAMapOfIslandsIsWalkedOnlyInPart) {
+  const std::string pk3 = "/usr/share/games/openarena/baseoa/pak6-patch088.pk3";
+  if (!fs::exists(pk3)) GTEST_SKIP() << pk3 << " is not installed";
+  const std::string note = "not reachable on foot";
+  const Outcome islands =
+      run("level walk " + pk3 + " --map delta --walks 1 --seed 1 --out " + path("delta"));
+  ASSERT_EQ(islands.status, 0) << islands.output;
+  EXPECT_TRUE(contains(islands.output, "holds 8 of the map's 41 spawn points")) << islands.output;
+  EXPECT_TRUE(contains(islands.output, "the other 33 spawn points")) << islands.output;
+  EXPECT_TRUE(contains(islands.output, note)) << islands.output;
+  const Outcome whole =
+      run("level walk " + pk3 + " --map aggressor --walks 1 --seed 1 --out " + path("aggr"));
+  ASSERT_EQ(whole.status, 0) << whole.output;
+  EXPECT_FALSE(contains(whole.output, note)) << whole.output;
+}
+
 }  // namespace
