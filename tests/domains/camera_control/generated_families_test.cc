@@ -148,6 +148,9 @@ void print_table(std::uint64_t seeds) {
       std::string failed;
       for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
         camera::Scene scene = experiments::generate_family(family, seed);
+        // SIGHTLINE_FAMILIES_ONLY=name runs only the scenes whose name holds it (to trace one).
+        const char* only = std::getenv("SIGHTLINE_FAMILIES_ONLY");
+        if (only != nullptr && scene.name().find(only) == std::string::npos) continue;
         const experiments::CameraRun r = run(scene, preset);
         const experiments::RunMetrics& m = r.metrics;
         seconds += m.duration_seconds;
@@ -168,6 +171,7 @@ void print_table(std::uint64_t seeds) {
           failed += " " + std::to_string(seed);
         }
       }
+      if (jerks.empty()) continue;
       std::sort(jerks.begin(), jerks.end());
       const double minutes = seconds / 60;
       std::printf("| %s | %s | %llu (%.0f) | %.2f (%.1f) | %d | %d | %.2f / %.2f | %.0f (%.0f) | "
