@@ -11,7 +11,8 @@
 // visible in every frame, no frame within the clearance radius, no move longer than
 // max_speed x dt without the cut flag, and at most 2 discretionary cuts (any reason but
 // "visibility-lost") per minute of each walk; all cuts pooled over each family at most 2
-// per minute. The seeds are fixed.
+// per minute. The seeds are fixed: 1-20 of each family. Without the planner's trail
+// (horizon_planner.h) colonnade seed 6 and rooms seed 12 fail the discretionary-cut check.
 //
 // SIGHTLINE_FAMILIES_TABLE=N (N seeds per family) prints instead the table of
 // docs/EXPERIMENTS.md ("Generated families"): anticipating, anticipating-path and the
@@ -199,22 +200,22 @@ namespace sightline {
 namespace {
 
 TEST(GeneratedFamilies, AnticipatingCameraOnCorridorsKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kCorridor, 1, 3);
+  check_family(SceneFamily::kCorridor, 1, 20);
 }
 TEST(GeneratedFamilies, AnticipatingCameraOnJunctionsKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kJunction, 1, 3);
+  check_family(SceneFamily::kJunction, 1, 20);
 }
 TEST(GeneratedFamilies, AnticipatingCameraOnRoomsKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kRooms, 1, 3);
+  check_family(SceneFamily::kRooms, 1, 20);
 }
 TEST(GeneratedFamilies, AnticipatingCameraOnColonnadesKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kColonnade, 1, 3);
+  check_family(SceneFamily::kColonnade, 1, 20);
 }
 TEST(GeneratedFamilies, AnticipatingCameraInTrafficKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kTraffic, 1, 3);
+  check_family(SceneFamily::kTraffic, 1, 20);
 }
 TEST(GeneratedFamilies, AnticipatingCameraOnStairsKeepsTheLookAtVisibleClearAndCutsRarely) {
-  check_family(SceneFamily::kStairs, 1, 3);
+  check_family(SceneFamily::kStairs, 1, 20);
 }
 
 }  // namespace
