@@ -114,12 +114,15 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   const Eigen::Vector3d ideal = problem_->ideal_position();
   const double clearance_radius = problem_->profile().clearance_radius;
   // Left behind: farther from the ideal shot than the solver searches, the straight way
-  // there blocked, the shot itself open, and (to start following) no nearer than last
-  // frame; then it follows until it sees its way to the shot or is near it.
+  // there blocked, the shot itself open and in her sight (so her path leads there: a shot
+  // beyond the wall she backed up to is not reached along it), and (to start following)
+  // no nearer than last frame; then it follows until it sees its way to the shot or is
+  // near it.
   const double off = (now.position - ideal).norm();
   const bool cut_off = off > problem_->profile().search_half_size &&
                        scene_now.clearance(ideal, clearance_radius + 1e-6) >= clearance_radius &&
-                       !scene_now.line_of_sight(now.position, ideal);
+                       !scene_now.line_of_sight(now.position, ideal) &&
+                       scene_now.line_of_sight(look, ideal);
   following_trail_ = cut_off && (following_trail_ || off >= last_off_ideal_);
   last_off_ideal_ = off;
   if (following_trail_) {

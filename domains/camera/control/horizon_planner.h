@@ -18,7 +18,8 @@
 //          is kept while it stays good); and a smooth stop (come to rest ahead). A goal
 //          moves with the target: the quintic ends where the target will be at T.
 //          And, only when the camera is left behind (farther from the ideal shot than the
-//          solver searches, the straight way there blocked, and no nearer than the frame
+//          solver searches, the straight way there blocked, the shot open and seen from her
+//          look-at point, and no nearer than the frame
 //          before; it then keeps following until the way is clear), the trail: the
 //          newest point of the character's own recent path (her look-at points, one every
 //          kTrailSpacing metres, the last kTrailPoints) that the camera sees directly. She
