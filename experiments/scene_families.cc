@@ -3,178 +3,24 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <random>
 #include <stdexcept>
 #include <utility>
 
-#include "domains/camera/scene_at_time.h"
+#include "experiments/scene_building.h"
 
 namespace sightline::experiments {
-namespace {
 
 using Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kHalfBody = 0.3;  // the default character's half width (0.6 m square)
+using scene_building::add_ceiling;
+using scene_building::carve_walls;
+using scene_building::Draw;
+using scene_building::finish;
+using scene_building::kHalfBody;
+using scene_building::lane;
+using scene_building::Rect;
+using scene_building::walk;
 
-struct Draw {
-  explicit Draw(std::uint64_t seed) : rng(seed) {}
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(rng); }
-  bool chance(double p) { return unit(rng) < p; }
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
-  std::mt19937_64 rng;
-  std::uniform_real_distribution<double> unit{0, 1};
-};
-
-// A rectangle of open ground (x, z).
-struct Rect {
-  double x0, z0, x1, z1;
-  Rect grown(double by) const { return {x0 - by, z0 - by, x1 + by, z1 + by}; }
-  bool holds(double x, double z) const { return x > x0 && x < x1 && z > z0 && z < z1; }
-};
-
-// The rectangle a walk from a to b (along x or z) sweeps with `width`, extended by `ea`
-// behind a and `eb` beyond b.
-Rect lane(const Vector3d& a, const Vector3d& b, double width, double ea, double eb) {
-  const Vector3d d = (b - a).normalized();
-  const Vector3d p = a - ea * d, q = b + eb * d;
-  const double wx = std::abs(d.x()) < 0.5 ? width / 2 : 0, wz = std::abs(d.z()) < 0.5 ? width / 2 : 0;
-  return {std::min(p.x(), q.x()) - wx, std::min(p.z(), q.z()) - wz, std::max(p.x(), q.x()) + wx,
-          std::max(p.z(), q.z()) + wz};
-}
-
-// Walls of `thickness` round the union of `open`: every cell of the grid the rectangles'
-// edges make that lies in some rectangle grown by `thickness` but in none of `open`, merged
-// into boxes column by column, from y0 to y1.
-void carve_walls(const std::vector<Rect>& open, double thickness, double y0, double y1,
-                 std::vector<camera::SolidBox>& boxes) {
-  std::vector<double> xs, zs;
-  for (const Rect& r : open) {
-    for (double x : {r.x0, r.x1, r.x0 - thickness, r.x1 + thickness}) xs.push_back(x);
-    for (double z : {r.z0, r.z1, r.z0 - thickness, r.z1 + thickness}) zs.push_back(z);
-  }
-  for (auto* v : {&xs, &zs}) {
-    std::sort(v->begin(), v->end());
-    v->erase(std::unique(v->begin(), v->end(), [](double a, double b) { return b - a < 1e-9; }),
-             v->end());
-  }
-  auto wall_cell = [&](std::size_t i, std::size_t j) {
-    const double x = (xs[i] + xs[i + 1]) / 2, z = (zs[j] + zs[j + 1]) / 2;
-    bool in_open = false, in_ring = false;
-    for (const Rect& r : open) {
-      in_open = in_open || r.holds(x, z);
-      in_ring = in_ring || r.grown(thickness).holds(x, z);
-    }
-    return in_ring && !in_open;
-  };
-  // Runs of wall cells along z in each column; a run continuing the previous column's run
-  // over the same z span extends its box.
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> previous, current;
-  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
-    current.clear();
-    for (std::size_t j = 0; j + 1 < zs.size();) {
-      if (!wall_cell(i, j)) {
-        ++j;
-        continue;
-      }
-      std::size_t k = j;
-      while (k + 1 < zs.size() && wall_cell(i, k)) ++k;
-      const auto run = std::make_pair(j, k);
-      if (auto it = previous.find(run); it != previous.end()) {
-        boxes[it->second].box.max.x() = xs[i + 1];
-        current[run] = it->second;
-      } else {
-        current[run] = boxes.size();
-        boxes.push_back({"wall", {{xs[i], y0, zs[j]}, {xs[i + 1], y1, zs[k]}}, {}});
-      }
-      j = k;
-    }
-    std::swap(previous, current);
-  }
-}
-
-// A ceiling slab over each open rectangle (grown by the walls' thickness), its underside at y.
-void add_ceiling(const std::vector<Rect>& open, double thickness, double y,
-                 std::vector<camera::SolidBox>& boxes) {
-  for (const Rect& r : open) {
-    const Rect g = r.grown(thickness);
-    boxes.push_back({"ceiling", {{g.x0, y, g.z0}, {g.x1, y + 0.2, g.z1}}, {}});
-  }
-}
-
-// Keyframes through `points` at `speed` (along the 3-D path), facing the way of travel in
-// the ground plane (a vertical move keeps the yaw), turning on the spot at each waypoint at
-// 225 deg/s (0.4 s for a quarter turn, at least 0.4 s).
-camera::Trajectory walk(const std::vector<Vector3d>& points, double speed) {
-  std::vector<camera::Keyframe> keys;
-  double t = 0, yaw = 0;
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const Vector3d d = points[i] - points[i - 1];
-    if (std::hypot(d.x(), d.z()) > 1e-6) {
-      yaw = std::atan2(d.x(), d.z()) * 180 / kPi;
-      break;
-    }
-  }
-  keys.push_back({t, points[0], yaw});
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const Vector3d d = points[i] - points[i - 1];
-    if (d.norm() < 1e-9) continue;
-    if (std::hypot(d.x(), d.z()) > 1e-6) {
-      const double turn = std::remainder(std::atan2(d.x(), d.z()) * 180 / kPi - yaw, 360.0);
-      if (std::abs(turn) > 1) {
-        t += 0.4 * std::max(1.0, std::abs(turn) / 90);
-        yaw += turn;
-        keys.push_back({t, points[i - 1], yaw});
-      }
-    }
-    t += d.norm() / speed;
-    keys.push_back({t, points[i], yaw});
-  }
-  return camera::Trajectory(std::move(keys));
-}
-
-// The scene, checked: the body never overlaps a solid box at any frame (the scene reader's
-// rule), no mover comes within 0.3 m of the body; the camera starts 4 m behind and 1 m above
-// the look-at point, drawn in toward it until clear and in sight.
-camera::Scene finish(std::string name, std::string description,
-                     std::vector<camera::SolidBox> boxes, const std::vector<Vector3d>& path,
-                     double speed, std::vector<camera::Mover> movers = {}) {
-  camera::Scene scene(std::move(name), std::move(boxes), {}, camera::CharacterShape{},
-                      walk(path, speed), 60);
-  scene.set_description(std::move(description));
-  scene.set_movers(std::move(movers));
-  for (std::size_t f = 0; f < scene.frame_count(); ++f) {
-    const double t = scene.frame_time(f);
-    const camera::Aabb body = scene.character().body_at(scene.character_at(t).position);
-    if (auto hit = scene.solid_overlapping(body)) {
-      throw std::logic_error(scene.name() + ": the walk enters solid box #" +
-                             std::to_string(*hit) + " at t = " + std::to_string(t));
-    }
-    for (const camera::Mover& m : scene.movers()) {
-      const camera::Aabb b = m.box_at(t);
-      const double gap = std::max({b.min.x() - body.max.x(), body.min.x() - b.max.x(),
-                                   b.min.z() - body.max.z(), body.min.z() - b.max.z(),
-                                   b.min.y() - body.max.y(), body.min.y() - b.max.y()});
-      if (gap < 0.3) {
-        throw std::logic_error(scene.name() + ": mover " + m.name() + " meets the walk at t = " +
-                               std::to_string(t));
-      }
-    }
-  }
-  const double start = scene.trajectory().start_time();
-  camera::SceneAtTime now(scene);
-  now.set_time(start);
-  const camera::CharacterState c = scene.character_at(start);
-  const Vector3d look = scene.character().look_at(c.position);
-  for (double f = 1.0; f > 0.05; f -= 0.05) {
-    const Vector3d p = look + f * Vector3d(-4 * c.facing().x(), 1.0, -4 * c.facing().z());
-    if (now.clearance(p, 0.5) >= 0.4 && now.line_of_sight(p, look)) {
-      scene.set_camera_start(p);
-      break;
-    }
-  }
-  return scene;
-}
+namespace {
 
 std::string name_of(const char* family, std::uint64_t seed) {
   return std::string(family) + "-seed-" + std::to_string(seed);
@@ -210,12 +56,18 @@ std::string ceiling_text(std::pair<double, double> heights) {
 
 std::string to_string(SceneFamily family) {
   switch (family) {
-    case SceneFamily::kCorridor: return "corridor";
-    case SceneFamily::kJunction: return "junction";
-    case SceneFamily::kRooms: return "rooms";
-    case SceneFamily::kColonnade: return "colonnade";
-    case SceneFamily::kTraffic: return "traffic";
-    case SceneFamily::kStairs: return "stairs";
+    case SceneFamily::kCorridor:
+      return "corridor";
+    case SceneFamily::kJunction:
+      return "junction";
+    case SceneFamily::kRooms:
+      return "rooms";
+    case SceneFamily::kColonnade:
+      return "colonnade";
+    case SceneFamily::kTraffic:
+      return "traffic";
+    case SceneFamily::kStairs:
+      return "stairs";
   }
   return "?";
 }
@@ -229,12 +81,18 @@ const std::vector<SceneFamily>& all_scene_families() {
 
 camera::Scene generate_family(SceneFamily family, std::uint64_t seed) {
   switch (family) {
-    case SceneFamily::kCorridor: return generate_corridor(seed);
-    case SceneFamily::kJunction: return generate_junction(seed);
-    case SceneFamily::kRooms: return generate_rooms(seed);
-    case SceneFamily::kColonnade: return generate_colonnade(seed);
-    case SceneFamily::kTraffic: return generate_traffic(seed);
-    case SceneFamily::kStairs: return generate_stairs(seed);
+    case SceneFamily::kCorridor:
+      return generate_corridor(seed);
+    case SceneFamily::kJunction:
+      return generate_junction(seed);
+    case SceneFamily::kRooms:
+      return generate_rooms(seed);
+    case SceneFamily::kColonnade:
+      return generate_colonnade(seed);
+    case SceneFamily::kTraffic:
+      return generate_traffic(seed);
+    case SceneFamily::kStairs:
+      return generate_stairs(seed);
   }
   throw std::logic_error("unknown scene family");
 }
@@ -253,8 +111,7 @@ camera::Scene generate_corridor(std::uint64_t seed) {
   if (kind == 2) {
     const int legs = draw.integer(4, 6);
     for (int i = 0; i < legs; ++i) {
-      dirs.push_back(i % 2 == 0 ? Vector3d(0, 0, 1)
-                                : Vector3d(draw.chance(0.5) ? 1 : -1, 0, 0));
+      dirs.push_back(i % 2 == 0 ? Vector3d(0, 0, 1) : Vector3d(draw.chance(0.5) ? 1 : -1, 0, 0));
     }
   }
   std::vector<double> width;
@@ -295,8 +152,8 @@ camera::Scene generate_junction(std::uint64_t seed) {
   const double thickness = draw.between(0.2, 0.4), speed = draw.between(1.2, 2.5);
   const double w_stem = draw.between(1.5, 4), w_bar = draw.between(1.5, 4),
                w_far = draw.between(1.5, 4);
-  const double south = draw.between(6, 14), west = draw.between(5, 12),
-               east = draw.between(5, 12), north = draw.between(5, 12);
+  const double south = draw.between(6, 14), west = draw.between(5, 12), east = draw.between(5, 12),
+               north = draw.between(5, 12);
   const double side = draw.chance(0.5) ? 1 : -1;
   std::vector<Rect> open;
   std::vector<Vector3d> path;
@@ -305,13 +162,17 @@ camera::Scene generate_junction(std::uint64_t seed) {
     open.push_back({-w_bar / 2, -south, w_bar / 2, north});
     open.push_back(side > 0 ? Rect{0, -w_stem / 2, east, w_stem / 2}
                             : Rect{-west, -w_stem / 2, 0, w_stem / 2});
-    path = {{0, 0, -south + draw.between(0.5, 4)}, {0, 0, 0}, {side * ((side > 0 ? east : west) - 1.5), 0, 0}};
+    path = {{0, 0, -south + draw.between(0.5, 4)},
+            {0, 0, 0},
+            {side * ((side > 0 ? east : west) - 1.5), 0, 0}};
   } else {
     // Up the stem (z) to the bar (x), turning left or right; an X has the stem go on north.
     open.push_back({-w_stem / 2, -south, w_stem / 2, kind == 2 ? north : 0});
     open.push_back({-west, -w_bar / 2, east, w_bar / 2});
     if (kind == 2) open.push_back({-w_far / 2, 0, w_far / 2, north});
-    path = {{0, 0, -south + draw.between(0.5, 4)}, {0, 0, 0}, {side * ((side > 0 ? east : west) - 1.5), 0, 0}};
+    path = {{0, 0, -south + draw.between(0.5, 4)},
+            {0, 0, 0},
+            {side * ((side > 0 ? east : west) - 1.5), 0, 0}};
   }
   // Half the time the arm she takes ends in a corner she turns too.
   if (draw.chance(0.5)) {
@@ -369,7 +230,8 @@ camera::Scene generate_rooms(std::uint64_t seed) {
       const double c = draw.between(lo + dw / 2 + 0.4, hi - dw / 2 - 0.4);
       from = c - span / 2;
     }
-    const double a = std::max(lo, from) + dw / 2 + 0.4, b = std::min(hi, from + span) - dw / 2 - 0.4;
+    const double a = std::max(lo, from) + dw / 2 + 0.4,
+                 b = std::min(hi, from + span) - dw / 2 - 0.4;
     const double c = last ? from + span / 2 : draw.between(a, std::max(a, b));
     const double wall = north ? room.z1 : room.x1;
     const double depth = last ? draw.between(4, 7) : draw.between(3.5, 9);
@@ -380,13 +242,15 @@ camera::Scene generate_rooms(std::uint64_t seed) {
     room = next;
   }
   for (const Door& d : doors) {
-    open.push_back(d.north ? Rect{d.centre - d.width / 2, d.wall, d.centre + d.width / 2, d.wall + t}
-                           : Rect{d.wall, d.centre - d.width / 2, d.wall + t, d.centre + d.width / 2});
+    open.push_back(d.north
+                       ? Rect{d.centre - d.width / 2, d.wall, d.centre + d.width / 2, d.wall + t}
+                       : Rect{d.wall, d.centre - d.width / 2, d.wall + t, d.centre + d.width / 2});
   }
   // The walk: 0.8 m before and after each doorway, straight across it; in between, inside
   // one room (convex), sometimes by a point 1 m or more from its walls.
   auto at = [&](const Door& d, double offset) {
-    return d.north ? Vector3d(d.centre, 0, d.wall + offset) : Vector3d(d.wall + offset, 0, d.centre);
+    return d.north ? Vector3d(d.centre, 0, d.wall + offset)
+                   : Vector3d(d.wall + offset, 0, d.centre);
   };
   std::vector<Vector3d> path{at(doors[0], -draw.between(2.5, len - 0.5))};
   for (std::size_t k = 0; k < doors.size(); ++k) {
@@ -406,8 +270,8 @@ camera::Scene generate_rooms(std::uint64_t seed) {
   std::vector<camera::SolidBox> boxes;
   build(open, t, heights, boxes);
   char text[160];
-  std::snprintf(text, sizeof text, "%d rooms joined by doorways, walls %.2f m, %s, %.1f m/s",
-                rooms, t, ceiling_text(heights).c_str(), speed);
+  std::snprintf(text, sizeof text, "%d rooms joined by doorways, walls %.2f m, %s, %.1f m/s", rooms,
+                t, ceiling_text(heights).c_str(), speed);
   return finish(name_of("rooms", seed), text, std::move(boxes), path, speed);
 }
 
@@ -428,7 +292,8 @@ camera::Scene generate_colonnade(std::uint64_t seed) {
   double previous_face = -1e9;
   while (z < length + 4) {
     const double s = draw.between(0.3, 1.0), h = roof ? top : draw.between(3, 6);
-    if (z - previous_face >= 1.3 && z > 2 && z < length - 2) gaps.push_back((z + previous_face) / 2);
+    if (z - previous_face >= 1.3 && z > 2 && z < length - 2)
+      gaps.push_back((z + previous_face) / 2);
     boxes.push_back({"column", {{row - s / 2, 0, z}, {row + s / 2, h, z + s}}, {}});
     previous_face = z + s;
     z += s + draw.between(0.6, 4);
@@ -436,13 +301,18 @@ camera::Scene generate_colonnade(std::uint64_t seed) {
   if (second_row) {
     for (double zc = -draw.between(0, 3); zc < length + 4;) {
       const double s = draw.between(0.3, 1.0);
-      boxes.push_back({"column", {{-other - s / 2, 0, zc}, {-other + s / 2, roof ? top : draw.between(3, 6), zc + s}}, {}});
+      boxes.push_back(
+          {"column",
+           {{-other - s / 2, 0, zc}, {-other + s / 2, roof ? top : draw.between(3, 6), zc + s}},
+           {}});
       zc += s + draw.between(0.6, 4);
     }
   } else {
-    boxes.push_back({"wall", {{-other - 0.3, 0, -5}, {-other, draw.between(3, 8), length + 5}}, {}});
+    boxes.push_back(
+        {"wall", {{-other - 0.3, 0, -5}, {-other, draw.between(3, 8), length + 5}}, {}});
   }
-  if (roof) boxes.push_back({"roof", {{-other - 0.6, top, -5}, {row + 0.6, top + 0.3, length + 5}}, {}});
+  if (roof)
+    boxes.push_back({"roof", {{-other - 0.6, top, -5}, {row + 0.6, top + 0.3, length + 5}}, {}});
   std::vector<Vector3d> path{{0, 0, 0}};
   bool out = false;
   double last_switch = 0;
@@ -468,7 +338,8 @@ camera::Scene generate_colonnade(std::uint64_t seed) {
 // 0.3 m of her (one that would is drawn again, at most 50 times, then left out).
 camera::Scene generate_traffic(std::uint64_t seed) {
   Draw draw(seed);
-  const double road = draw.between(3, 5), pavement = draw.between(2, 4), speed = draw.between(1.2, 2.2);
+  const double road = draw.between(3, 5), pavement = draw.between(2, 4),
+               speed = draw.between(1.2, 2.2);
   const double length = draw.between(50, 80), face = road + pavement;
   std::vector<camera::SolidBox> boxes;
   std::vector<double> side_streets;  // centre lines (z)
@@ -547,7 +418,8 @@ camera::Scene generate_traffic(std::uint64_t seed) {
         const double dir = draw.chance(0.5) ? 1 : -1, side = c.position.x() > 0 ? 1 : -1;
         const double half = what < 8 ? 40 : draw.between(2, 4);
         const double xc = what < 8 ? 0 : side * (face - 0.6 - half);
-        keys = {{when - half / v, {xc - dir * half, 0, zc}}, {when + half / v, {xc + dir * half, 0, zc}}};
+        keys = {{when - half / v, {xc - dir * half, 0, zc}},
+                {when + half / v, {xc + dir * half, 0, zc}}};
       }
       camera::Mover m((what < 8 ? "vehicle-" : "person-") + std::to_string(i), size, keys);
       if (!misses_her(m)) continue;
@@ -556,7 +428,8 @@ camera::Scene generate_traffic(std::uint64_t seed) {
     }
   }
   char text[160];
-  std::snprintf(text, sizeof text, "street %.0f m, road %.1f m, pavement %.1f m, %zu movers, %zu crossings, %.1f m/s",
+  std::snprintf(text, sizeof text,
+                "street %.0f m, road %.1f m, pavement %.1f m, %zu movers, %zu crossings, %.1f m/s",
                 length, 2 * road, pavement, movers.size(), (path.size() - 2) / 2, speed);
   return finish(name_of("traffic", seed), text, std::move(boxes), path, speed, std::move(movers));
 }
@@ -573,14 +446,17 @@ void flight(const Vector3d& origin, const Vector3d& d, double width, int steps, 
   for (int j = 1; j <= steps; ++j) {
     const Vector3d p = origin + (j - 1) * tread * d - width / 2 * l;
     const Vector3d q = origin + j * tread * d + width / 2 * l;
-    boxes.push_back({"step", {{std::min(p.x(), q.x()), 0, std::min(p.z(), q.z())},
-                              {std::max(p.x(), q.x()), origin.y() + j * rise, std::max(p.z(), q.z())}}, {}});
+    boxes.push_back({"step",
+                     {{std::min(p.x(), q.x()), 0, std::min(p.z(), q.z())},
+                      {std::max(p.x(), q.x()), origin.y() + j * rise, std::max(p.z(), q.z())}},
+                     {}});
     path.push_back(origin + ((j - 1) * tread - kHalfBody) * d + Vector3d(0, j * rise, 0));
   }
 }
 
 Rect ground_rect(const Vector3d& a, const Vector3d& b) {
-  return {std::min(a.x(), b.x()), std::min(a.z(), b.z()), std::max(a.x(), b.x()), std::max(a.z(), b.z())};
+  return {std::min(a.x(), b.x()), std::min(a.z(), b.z()), std::max(a.x(), b.x()),
+          std::max(a.z(), b.z())};
 }
 
 }  // namespace
@@ -620,10 +496,14 @@ camera::Scene generate_stairs(std::uint64_t seed) {
   } else {
     const double gap = 0.2, across = width + gap;
     const Vector3d far = Vector3d(0, 0, end1) + across * x;
-    const Rect landing = ground_rect(Vector3d(0, 0, end1) - width / 2 * x, far + width / 2 * x + width * z);
+    const Rect landing =
+        ground_rect(Vector3d(0, 0, end1) - width / 2 * x, far + width / 2 * x + width * z);
     boxes.push_back({"landing", {{landing.x0, 0, landing.z0}, {landing.x1, top1, landing.z1}}, {}});
-    const Rect divider = ground_rect(Vector3d(0, 0, 0) + width / 2 * x, Vector3d(0, 0, end1) + (width / 2 + gap) * x);
-    boxes.push_back({"divider", {{divider.x0, 0, divider.z0}, {divider.x1, top1 + n2 * rise + 1, divider.z1}}, {}});
+    const Rect divider = ground_rect(Vector3d(0, 0, 0) + width / 2 * x,
+                                     Vector3d(0, 0, end1) + (width / 2 + gap) * x);
+    boxes.push_back({"divider",
+                     {{divider.x0, 0, divider.z0}, {divider.x1, top1 + n2 * rise + 1, divider.z1}},
+                     {}});
     const Vector3d centre(0, top1, end1 + width / 2);
     path.push_back(centre);
     path.push_back(centre + across * x);
@@ -636,7 +516,8 @@ camera::Scene generate_stairs(std::uint64_t seed) {
   const Vector3d l2(std::abs(d2.z()), 0, std::abs(d2.x()));
   // Beside a U's second flight lies the first: its floor keeps to the flight's width.
   const double floor_half = kind == 2 ? width / 2 : std::max(width / 2, 2.0);
-  const Rect floor = ground_rect(end2 - floor_half * l2, end2 + floor_length * d2 + floor_half * l2);
+  const Rect floor =
+      ground_rect(end2 - floor_half * l2, end2 + floor_length * d2 + floor_half * l2);
   boxes.push_back({"floor", {{floor.x0, 0, floor.z0}, {floor.x1, top2, floor.z1}}, {}});
   path.push_back(Vector3d(end2.x(), top2, end2.z()) + (floor_length - 1.5) * d2);
   // The stairwell in plan: flights, landing and floor, for the walls round it.
@@ -655,9 +536,13 @@ camera::Scene generate_stairs(std::uint64_t seed) {
   if (down) std::reverse(path.begin(), path.end());
   const char* kinds[] = {"straight", "L", "U"};
   char text[160];
-  std::snprintf(text, sizeof text, "%s stairs %s, %d+%d steps of %.2f/%.2f m, %.1f m wide, %s, %.1f m/s",
-                kinds[kind], down ? "down" : "up", n1, n2, rise, tread, width,
-                !walls ? "no walls" : ceiling ? "walled, ceiling" : "walled", speed);
+  std::snprintf(text, sizeof text,
+                "%s stairs %s, %d+%d steps of %.2f/%.2f m, %.1f m wide, %s, %.1f m/s", kinds[kind],
+                down ? "down" : "up", n1, n2, rise, tread, width,
+                !walls    ? "no walls"
+                : ceiling ? "walled, ceiling"
+                          : "walled",
+                speed);
   return finish(name_of("stairs", seed), text, std::move(boxes), path, speed);
 }
 

@@ -7,9 +7,7 @@
 // overlaps a solid box at any frame (the scene file reader's check), movers never come
 // within 0.3 m of her body, the camera starts clear. A generator that would break this throws
 // std::logic_error (a bug here, never bad input). The same seed always gives the same scene.
-// Walls are carved: the open space is a union of rectangles, and the walls are the ring of
-// given thickness around it that lies in no rectangle, so corridors of different widths,
-// rooms and junctions need no special cases.
+// The walls are carved round unions of open rectangles (scene_building.h).
 #pragma once
 
 #include <cstdint>

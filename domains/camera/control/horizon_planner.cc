@@ -98,7 +98,8 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   // The trail: the character's look-at point every kTrailSpacing metres.
   {
     const int newest = (trail_next_ + kTrailPoints - 1) % kTrailPoints;
-    if (trail_size_ == 0 || (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
+    if (trail_size_ == 0 ||
+        (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
       trail_[static_cast<std::size_t>(trail_next_)] = look;
       trail_next_ = (trail_next_ + 1) % kTrailPoints;
       trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
@@ -140,11 +141,12 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
                    scene_now.clearance(p, clearance_radius + 1e-6) >= clearance_radius)) {
         waypoint = high ? raised : p;
         // Moving on along her path at the target's speed: the way she went from there.
-        const Eigen::Vector3d& next =
-            trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
+        const Eigen::Vector3d& next = trail_[static_cast<std::size_t>(
+            (trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
         const Eigen::Vector3d along = next - p;
-        trail_velocity = along.norm() > 1e-9 ? Eigen::Vector3d(along.normalized() * target_velocity.norm())
-                                             : Eigen::Vector3d::Zero();
+        trail_velocity = along.norm() > 1e-9
+                             ? Eigen::Vector3d(along.normalized() * target_velocity.norm())
+                             : Eigen::Vector3d::Zero();
         break;
       }
     }

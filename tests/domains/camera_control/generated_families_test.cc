@@ -51,8 +51,8 @@ void expect_valid_walk(const camera::Scene& scene) {
     const Eigen::Vector3d lo = feet - half,
                           hi = feet + half + Eigen::Vector3d(0, scene.character().size.y(), 0);
     for (const experiments::SolidBox& b : input.boxes) {
-      const bool overlap = (lo.array() < b.max.array() - 1e-9).all() &&
-                           (b.min.array() + 1e-9 < hi.array()).all();
+      const bool overlap =
+          (lo.array() < b.max.array() - 1e-9).all() && (b.min.array() + 1e-9 < hi.array()).all();
       if (overlap && bad++ < 3) ADD_FAILURE() << scene.name() << ": body inside a box at t=" << t;
     }
     experiments::moving_boxes_at(input.movers, t, movers);
@@ -124,22 +124,24 @@ void check_family(SceneFamily family, std::uint64_t first, std::uint64_t last) {
     EXPECT_EQ(j.too_close, 0) << scene.name() << " (" << scene.description() << ")";
     EXPECT_EQ(j.unflagged, 0) << scene.name();
     EXPECT_LE(j.discretionary, 2.0 * j.seconds / 60.0)
-        << scene.name() << ": " << j.discretionary << " discretionary cuts in " << j.seconds << " s";
+        << scene.name() << ": " << j.discretionary << " discretionary cuts in " << j.seconds
+        << " s";
     cuts += j.cuts;
     seconds += j.seconds;
     std::printf("[families] %-22s %5.1f s  cuts %d  hidden %d  jerk p99 %.0f  (%s)\n",
                 scene.name().c_str(), j.seconds, j.cuts, j.hidden, r.metrics.jerk_p99,
                 scene.description().c_str());
   }
-  EXPECT_LE(cuts / (seconds / 60), 2.0) << to_string(family) << ": " << cuts << " cuts in "
-                                         << seconds << " s";
+  EXPECT_LE(cuts / (seconds / 60), 2.0)
+      << to_string(family) << ": " << cuts << " cuts in " << seconds << " s";
 }
 
 // The table of docs/EXPERIMENTS.md: per family and camera, the metrics' figures over seeds.
 void print_table(std::uint64_t seeds) {
-  std::printf("| family | camera | walks (s) | look-at visible %% (worst walk) | unflagged jumps | "
-              "frames within clearance | cuts forced / discretionary per min | jerk p99 median "
-              "(max) m/s^3 | distance dev (m) | height dev (m) | failing walks |\n");
+  std::printf(
+      "| family | camera | walks (s) | look-at visible %% (worst walk) | unflagged jumps | "
+      "frames within clearance | cuts forced / discretionary per min | jerk p99 median "
+      "(max) m/s^3 | distance dev (m) | height dev (m) | failing walks |\n");
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (SceneFamily family : experiments::all_scene_families()) {
     for (const char* preset : {"anticipating", "anticipating-path", "thesis-default"}) {
@@ -175,13 +177,13 @@ void print_table(std::uint64_t seeds) {
       if (jerks.empty()) continue;
       std::sort(jerks.begin(), jerks.end());
       const double minutes = seconds / 60;
-      std::printf("| %s | %s | %llu (%.0f) | %.2f (%.1f) | %d | %d | %.2f / %.2f | %.0f (%.0f) | "
-                  "%.2f | %.2f | %d%s%s |\n",
-                  to_string(family).c_str(), preset, static_cast<unsigned long long>(seeds),
-                  seconds, visible / seconds, worst, unflagged, close, forced / minutes,
-                  discretionary / minutes, jerks[jerks.size() / 2], jerks.back(),
-                  distance / seconds, height / seconds, failing, failed.empty() ? "" : ": seeds",
-                  failed.c_str());
+      std::printf(
+          "| %s | %s | %llu (%.0f) | %.2f (%.1f) | %d | %d | %.2f / %.2f | %.0f (%.0f) | "
+          "%.2f | %.2f | %d%s%s |\n",
+          to_string(family).c_str(), preset, static_cast<unsigned long long>(seeds), seconds,
+          visible / seconds, worst, unflagged, close, forced / minutes, discretionary / minutes,
+          jerks[jerks.size() / 2], jerks.back(), distance / seconds, height / seconds, failing,
+          failed.empty() ? "" : ": seeds", failed.c_str());
       std::fflush(stdout);
     }
   }
