@@ -95,8 +95,66 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   toward = reach_in > 1e-9 ? Eigen::Vector3d(toward / reach_in) : Eigen::Vector3d::UnitX();
   const Eigen::Vector3d side(toward.z(), 0, -toward.x());
 
-  // Offsets from the target (index kStop: the smooth stop, goal computed below).
-  constexpr int kStop = kCandidates - 1;
+  // The trail: the character's look-at point every kTrailSpacing metres.
+  {
+    const int newest = (trail_next_ + kTrailPoints - 1) % kTrailPoints;
+    if (trail_size_ == 0 ||
+        (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
+      trail_[static_cast<std::size_t>(trail_next_)] = look;
+      trail_next_ = (trail_next_ + 1) % kTrailPoints;
+      trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
+    }
+  }
+  const SceneAtTime& scene_now = problem_->scene_at_time();
+  // Only when the straight way to the ideal position (the profile's shot, where the
+  // camera should end up; the solver's target is searched near the camera and may be on
+  // the camera's side of a wall) is blocked: the newest trail point the camera sees
+  // directly, with room for it there.
+  std::optional<Eigen::Vector3d> waypoint;
+  Eigen::Vector3d trail_velocity = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d ideal = problem_->ideal_position();
+  const double clearance_radius = problem_->profile().clearance_radius;
+  // Left behind: farther from the ideal shot than the solver searches, the straight way
+  // there blocked, the shot itself open and in her sight (so her path leads there: a shot
+  // beyond the wall she backed up to is not reached along it), and (to start following)
+  // no nearer than last frame; then it follows until it sees its way to the shot or is
+  // near it.
+  const double off = (now.position - ideal).norm();
+  const bool cut_off = off > problem_->profile().search_half_size &&
+                       scene_now.clearance(ideal, clearance_radius + 1e-6) >= clearance_radius &&
+                       !scene_now.line_of_sight(now.position, ideal) &&
+                       scene_now.line_of_sight(look, ideal);
+  following_trail_ = cut_off && (following_trail_ || off >= last_off_ideal_);
+  last_off_ideal_ = off;
+  if (following_trail_) {
+    for (int k = 1; k <= trail_size_; ++k) {
+      const Eigen::Vector3d& p =
+          trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
+      // At the shot's height above her path where there is room (no ceiling in the way),
+      // else at her look-at height, where her body was.
+      Eigen::Vector3d raised = p;
+      raised.y() += ideal.y() - look.y();
+      const bool high = scene_now.clearance(raised, clearance_radius + 1e-6) >= clearance_radius &&
+                        scene_now.line_of_sight(raised, p) &&
+                        scene_now.line_of_sight(now.position, raised);
+      if (high || (scene_now.line_of_sight(now.position, p) &&
+                   scene_now.clearance(p, clearance_radius + 1e-6) >= clearance_radius)) {
+        waypoint = high ? raised : p;
+        // Moving on along her path at the target's speed: the way she went from there.
+        const Eigen::Vector3d& next = trail_[static_cast<std::size_t>(
+            (trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
+        const Eigen::Vector3d along = next - p;
+        trail_velocity = along.norm() > 1e-9
+                             ? Eigen::Vector3d(along.normalized() * target_velocity.norm())
+                             : Eigen::Vector3d::Zero();
+        break;
+      }
+    }
+  }
+
+  // Offsets from the target (index kStop: the smooth stop, goal computed below; kTrail:
+  // the trail's waypoint).
+  constexpr int kStop = kCandidates - 1, kTrail = kCandidates - 2;
   std::array<Eigen::Vector3d, kCandidates> offsets = {
       Eigen::Vector3d::Zero(),
       previous_offset_,
@@ -108,19 +166,22 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       -1.5 * side,
       up + 1.5 * side,
       up - 1.5 * side,
+      waypoint ? Eigen::Vector3d(*waypoint - target) : Eigen::Vector3d::Zero(),
       Eigen::Vector3d::Zero()};
 
   // Where candidate i's goal is `ahead` seconds from now (the target keeps moving), and
   // how fast it moves then; the smooth stop comes to rest ahead of the camera.
   auto goal_of = [&](int i, double ahead) -> Eigen::Vector3d {
     if (i == kStop) return now.position + 0.5 * plan_seconds_ * now.velocity;
+    if (i == kTrail) return *waypoint + ahead * trail_velocity;  // on along her path
     return target + offsets[static_cast<std::size_t>(i)] + ahead * target_velocity;
   };
   auto velocity_of = [&](int i) -> Eigen::Vector3d {
+    if (i == kTrail) return trail_velocity;
     return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
   };
   const csp::Problem& problem = problem_->problem();
-  const SceneAtTime& geometry_now = problem_->scene_at_time();
+  const SceneAtTime& geometry_now = scene_now;
   const MotionPrediction& prediction = problem_->prediction();
   const double radius = problem_->profile().clearance_radius;
   const double sight_weight =
@@ -136,7 +197,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     order[static_cast<std::size_t>(i)] = i;
     const auto u = static_cast<std::size_t>(i);
     // A duplicate of the target (previous choice was the target itself) is skipped.
-    if (i == 1 && previous_offset_.squaredNorm() < 1e-12) {
+    if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kTrail && !waypoint)) {
       cheap[u] = std::numeric_limits<double>::infinity();
       continue;
     }
@@ -148,15 +209,17 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
                              std::sqrt(5.77 * d / (0.9 * max_acceleration_))});
     const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
     const double jerk = (q.acceleration(dt) - now.acceleration).norm() / dt;
-    // Framing is priced where the goal is now, against this frame's character.
-    const Eigen::Vector3d here = goal_of(i, 0);
+    // Framing is priced where the goal is now, against this frame's character; the trail's
+    // where it leads, the ideal shot behind her (its waypoint is a way, not a shot).
+    const Eigen::Vector3d here = i == kTrail ? ideal : goal_of(i, 0);
     const double values[3] = {here.x(), here.y(), here.z()};
     double framing = 0;
     for (csp::ConstraintId id : framing_ids_) {
       const csp::Constraint& c = problem.constraint(id);
       if (!c.is_hard()) framing += c.weight() * c.violation(std::span<const double>(values, 3));
     }
-    const Eigen::Vector3d offset = i == kStop ? Eigen::Vector3d(here - target) : offsets[u];
+    const Eigen::Vector3d offset =
+        i == kStop || i == kTrail ? Eigen::Vector3d(here - target) : offsets[u];
     cheap[u] = framing + kJerkPrice * jerk + kSwitchPrice * (offset - previous_offset_).norm();
   }
   // Ties (a duplicate of the previous choice, mirror offsets) go to the lower index, so the

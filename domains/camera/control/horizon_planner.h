@@ -17,6 +17,16 @@
 //          up 1 m and 1.5 m to either side; the previous frame's chosen offset (so a choice
 //          is kept while it stays good); and a smooth stop (come to rest ahead). A goal
 //          moves with the target: the quintic ends where the target will be at T.
+//          And, only when the camera is left behind (farther from the ideal shot than the
+//          solver searches, the straight way there blocked, the shot open and seen from her
+//          look-at point, and no nearer than the frame
+//          before; it then keeps following until the way is clear), the trail: the
+//          newest point of the character's own recent path (her look-at points, one every
+//          kTrailSpacing metres, the last kTrailPoints) that the camera sees directly. She
+//          walked there, so it is open space joined to where she is now: through the
+//          doorway or the gap between columns she took, where every straight goal runs
+//          into the wall beside it (a camera left behind a row of columns or a doorway's
+//          wall otherwise waits there until a stuck cut).
 //   T = max(plan_seconds, the time a minimum-jerk move of that length needs to stay under
 //          max_speed and max_acceleration): a physical bound, not a scene constant.
 // Each is priced:
@@ -51,6 +61,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -61,7 +73,11 @@ namespace sightline::camera {
 
 class HorizonPlanner {
  public:
-  static constexpr int kCandidates = 11;
+  static constexpr int kCandidates = 12;
+  // The character's trail: one look-at point every kTrailSpacing metres, the newest
+  // kTrailPoints (12 m: a room or two back).
+  static constexpr int kTrailPoints = 24;
+  static constexpr double kTrailSpacing = 0.5;
   // Cost per m/s^3 of jerk over the first frame: 300 m/s^3 (about the reactive camera's
   // p99) costs what 0.3 m off the desired distance costs.
   static constexpr double kJerkPrice = 1e-3;
@@ -88,7 +104,11 @@ class HorizonPlanner {
                             const Eigen::Vector3d& target_velocity, const Eigen::Vector3d& look,
                             double dt);
   // Forgets the previous choice (after a cut).
-  void reset() { previous_offset_.setZero(); }
+  void reset() {
+    previous_offset_.setZero();
+    following_trail_ = false;
+    last_off_ideal_ = std::numeric_limits<double>::infinity();
+  }
   // Index of the candidate chosen by the last successful plan() (0 = the target itself).
   int last_choice() const { return last_choice_; }
 
@@ -98,6 +118,12 @@ class HorizonPlanner {
   double max_speed_, max_acceleration_, plan_seconds_, max_jerk_;
   Eigen::Vector3d previous_offset_ = Eigen::Vector3d::Zero();
   int last_choice_ = 0;
+  // The trail, a ring: trail_[(trail_next_ - 1) mod kTrailPoints] is the newest of
+  // trail_size_ points.
+  std::array<Eigen::Vector3d, kTrailPoints> trail_{};
+  int trail_next_ = 0, trail_size_ = 0;
+  bool following_trail_ = false;  // left behind and following her trail (see above)
+  double last_off_ideal_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace sightline::camera
