@@ -91,6 +91,10 @@ class HorizonPlanner {
   void reset() { previous_offset_.setZero(); }
   // Index of the candidate chosen by the last successful plan() (0 = the target itself).
   int last_choice() const { return last_choice_; }
+  // After a plan() that found no usable first frame: whether some candidate, its first
+  // frame aside, is clear of geometry and sees the first predicted look-at point at that
+  // sample's time (in the geometry forecast for then): sight lost for a frame, not for good.
+  bool regains_sight() const { return regains_sight_; }
 
  private:
   const CameraProblem* problem_;
@@ -98,6 +102,7 @@ class HorizonPlanner {
   double max_speed_, max_acceleration_, plan_seconds_, max_jerk_;
   Eigen::Vector3d previous_offset_ = Eigen::Vector3d::Zero();
   int last_choice_ = 0;
+  bool regains_sight_ = true;
 };
 
 }  // namespace sightline::camera
