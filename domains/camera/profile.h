@@ -113,6 +113,13 @@ struct CutPolicy {
   // (up, toward the character, to either side; chase_camera.h). Off in the thesis profiles,
   // whose controller cut there.
   bool smooth_escape = false;
+  // With the planner (anticipation.plan_seconds > 0, a lookahead) and smooth_escape: when no
+  // planned trajectory keeps the look-at point this frame, none gets it back by the first
+  // predicted sample, and a mover will hide it from where the camera is for most of the
+  // horizon (a door shutting, a bus), the forced cut comes at once, to a shot that sees most
+  // predicted points, instead of after a series of escapes (velocity jumps) that each buy a
+  // frame (chase_camera.h). Off in the thesis profiles.
+  bool cut_ahead = false;
 
   bool operator==(const CutPolicy&) const = default;
 };

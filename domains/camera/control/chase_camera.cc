@@ -149,6 +149,25 @@ bool ChaseCamera::backed_up(const CharacterState& character, const Eigen::Vector
   return !usable(ideal, look);
 }
 
+int ChaseCamera::hidden_ahead(const Eigen::Vector3d& p, bool* by_mover) const {
+  const MotionPrediction& prediction = problem_.prediction();
+  int hidden = 0;
+  for (int k = 0; k < prediction.size(); ++k) {
+    const SceneAtTime& g = prediction.geometry(k);
+    const Eigen::Vector3d& l = prediction.sample(k).look_at;
+    if (g.line_of_sight(p, l)) continue;
+    ++hidden;
+    if (by_mover && g.mover_blocks(p, l)) *by_mover = true;
+  }
+  return hidden;
+}
+
+bool ChaseCamera::shut_out(const Eigen::Vector3d& p, bool by_mover_only) const {
+  bool by_mover = false;
+  const int hidden = hidden_ahead(p, by_mover_only ? &by_mover : nullptr);
+  return 2 * hidden > problem_.prediction().size() && (by_mover || !by_mover_only);
+}
+
 std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d& look,
                                                            const Eigen::Vector3d& step,
                                                            double dt) const {
@@ -225,7 +244,8 @@ double ChaseCamera::shot_cost(const Eigen::Vector3d& p) const {
   return sum;
 }
 
-std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look) const {
+std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look,
+                                                      bool ahead) const {
   // Rings around the look-at point, nearest first, from behind the character (toward the
   // camera) round to the front, at and above the look-at height: the first usable one.
   Eigen::Vector3d back = position_ - look;
@@ -239,7 +259,7 @@ std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look
         const double a = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * 0.25 * 3.14159265358979;
         const Eigen::Vector3d dir = std::cos(a) * back + std::sin(a) * side;
         const Eigen::Vector3d p = look + distance * dir + Eigen::Vector3d(0, rise, 0);
-        if (usable(p, look)) return p;
+        if (usable(p, look) && !(ahead && shut_out(p, false))) return p;
       }
     }
   }
@@ -314,8 +334,28 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
         moved = planned_move = true;
       }
     }
+    // cuts.cut_ahead: no planned trajectory keeps the look-at point in sight this frame, and
+    // a mover will hide it from where the camera is for most of the horizon (a door shutting,
+    // a bus, not a passer-by). Escapes (velocity jumps, each buying a frame) would only
+    // delay the forced cut: it comes now, to a shot that keeps the predicted points.
+    bool cut_ahead = false;
+    if (guard && planner_ && !moved && escapes && policy.cut_ahead &&
+        problem_.prediction().size() > 0 && !planner_->regains_sight() &&
+        shut_out(position_, true)) {
+      std::optional<Eigen::Vector3d> shot;
+      if (usable(target, look) && !shut_out(target, false)) shot = target;
+      if (!shot) {
+        const Eigen::Vector3d other = solve_for_new_shot(character, dt, look);
+        if (usable(other, look) && !shut_out(other, false)) shot = other;
+      }
+      if (!shot) shot = close_in(look, true);
+      if (shot) {  // else no such shot: as without the option
+        target = *shot;
+        cut_ahead = true;
+      }
+    }
     for (double fraction : {1.0, 0.5, 0.25}) {
-      if (moved) break;
+      if (moved || cut_ahead) break;
       if (escapes && fraction < 1) break;
       const Eigen::Vector3d next = position_ + fraction * (step - position_);
       if (!guard || (usable(next, look) && sees(position_, next))) {
@@ -326,7 +366,7 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       }
     }
     const std::optional<Eigen::Vector3d> escape =
-        !moved && escapes ? smooth_escape(look, step, dt) : std::nullopt;
+        !moved && escapes && !cut_ahead ? smooth_escape(look, step, dt) : std::nullopt;
     if (planned_move) {
       // A planned move always exists while some trajectory is usable, so "blocked" is not
       // what strands this camera: being left behind is. It makes no progress while it is
@@ -353,6 +393,8 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
       }
     } else if (moved) {
       stuck_for_ = 0;
+    } else if (cut_ahead) {
+      cut_to(target, CutReason::kVisibilityLost);
     } else if (escape) {
       velocity_ = (*escape - position_) / dt;
       position_ = *escape;

@@ -35,6 +35,13 @@
 //   camera has been left behind: farther from the ideal position than the search cube's
 //   half-size and getting no nearer for stuck_seconds or the horizon, whichever is
 //   longer (a wall between it and the shot, that no plan over the horizon gets round).
+//   With cuts.cut_ahead (on in the anticipating presets), a frame where the planner has no
+//   usable first frame and none of its trajectories sees the first predicted look-at point
+//   either, while a mover will hide the look-at point from where the camera is at more
+//   than half the predicted samples (a door shutting, a bus; not a passer-by, gone within
+//   the horizon), cuts at once (forced: no smooth move keeps the character visible) to a
+//   shot that sees most predicted points, rather than escaping frame by frame (each escape
+//   a velocity jump) into the same forced cut a few frames later.
 //   After a cut the new shot lasts at least `min_shot_seconds` unless visibility forces
 //   another cut. Every move longer than max_speed x dt is a cut, and flagged.
 // The same smoothing and cut logic applies whatever solver runs, so solvers are compared on
@@ -120,15 +127,22 @@ class ChaseCamera : public CameraController {
                               Eigen::Vector3d* velocity) const;
   void cut_to(const Eigen::Vector3d& p, CutReason reason);
   bool backed_up(const CharacterState& character, const Eigen::Vector3d& look) const;
-  // The cheapest usable short move (see the header comment), if any.
   // For a forced cut the solver could not place: the first usable spot on rings 1-3 m
   // around the look-at point (escape profiles only), if any.
-  std::optional<Eigen::Vector3d> close_in(const Eigen::Vector3d& look) const;
+  // With `ahead`, the spot must not be shut out itself (shut_out(p, false)).
+  std::optional<Eigen::Vector3d> close_in(const Eigen::Vector3d& look, bool ahead = false) const;
   // This frame's soft cost of a shot to cut to: framing and sight, without frame coherence.
   double shot_cost(const Eigen::Vector3d& p) const;
-  // `step` is where the spring would have gone.
+  // The cheapest usable short move (see the header comment), if any. `step` is where the
+  // spring would have gone.
   std::optional<Eigen::Vector3d> smooth_escape(const Eigen::Vector3d& look,
                                                const Eigen::Vector3d& step, double dt) const;
+  // How many of the predicted look-at points are hidden from `p`, each in the geometry
+  // forecast for its time; *by_mover set when a mover's box is among what hides one.
+  int hidden_ahead(const Eigen::Vector3d& p, bool* by_mover) const;
+  // More than half of the predicted points hidden from `p` (and, with `by_mover_only`, a
+  // mover among what hides them): for most of the horizon, whatever happens, no sight.
+  bool shut_out(const Eigen::Vector3d& p, bool by_mover_only) const;
 
   const Scene* scene_;
   ChaseCameraOptions options_;

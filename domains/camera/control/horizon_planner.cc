@@ -310,6 +310,21 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       }
     }
   }
+  if (!best) {
+    // No usable first frame. Would any candidate, its first frame aside, see the first
+    // predicted look-at point from where it is then (clear of geometry)? The controller's
+    // cuts.cut_ahead asks (regains_sight()).
+    regains_sight_ = prediction.size() == 0;
+    const MotionPrediction::Sample* first = prediction.size() > 0 ? &prediction.sample(0) : nullptr;
+    for (int i = 0; i < kCandidates && !regains_sight_; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      if (!std::isfinite(cheap[u])) continue;
+      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+      const Eigen::Vector3d x = q.position(std::max(first->ahead, dt));
+      const SceneAtTime& g = prediction.geometry(0);
+      regains_sight_ = g.clearance(x, radius + 1e-6) >= radius && g.line_of_sight(x, first->look_at);
+    }
+  }
   if (best) {
     if (last_choice_ == kStop) {
       // Kept as where the stop was heading, so leaving it is priced like any switch.

@@ -111,6 +111,10 @@ class HorizonPlanner {
   }
   // Index of the candidate chosen by the last successful plan() (0 = the target itself).
   int last_choice() const { return last_choice_; }
+  // After a plan() that found no usable first frame: whether some candidate, its first
+  // frame aside, is clear of geometry and sees the first predicted look-at point at that
+  // sample's time (in the geometry forecast for then): sight lost for a frame, not for good.
+  bool regains_sight() const { return regains_sight_; }
 
  private:
   const CameraProblem* problem_;
@@ -124,6 +128,7 @@ class HorizonPlanner {
   int trail_next_ = 0, trail_size_ = 0;
   bool following_trail_ = false;  // left behind and following her trail (see above)
   double last_off_ideal_ = std::numeric_limits<double>::infinity();
+  bool regains_sight_ = true;
 };
 
 }  // namespace sightline::camera

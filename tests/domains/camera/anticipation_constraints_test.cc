@@ -207,6 +207,8 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   EXPECT_TRUE(anticipating.cuts.smooth_escape);
   EXPECT_GT(anticipating.anticipation.plan_seconds, 0);  // motion planned over the horizon
   EXPECT_GT(anticipating.anticipation.max_jerk, 0);      // its changes of acceleration bounded
+  EXPECT_TRUE(anticipating.cuts.cut_ahead);  // shut out by a mover: one forced cut, no escapes
+  EXPECT_TRUE(preset_profile("anticipating-path").cuts.cut_ahead);
   CameraProblem cp(scene, anticipating);
   ASSERT_TRUE(cp.ids().future_visible.has_value());
   const csp::Constraint& c = cp.problem().constraint(*cp.ids().future_visible);
@@ -286,7 +288,8 @@ TEST(CameraProfile, ReadsTheAnticipationAndCutsBlocks) {
   const CameraProfile p = parse(
       "anticipation: {lookahead: path, horizon: 1.5, samples: 6, weight: 4, decay: 0.8,\n"
       "               plan_seconds: 0.6, max_jerk: 40}\n"
-      "cuts: {leave_enclosed: false, backing_up: true, stuck: false, smooth_escape: true}\n");
+      "cuts: {leave_enclosed: false, backing_up: true, stuck: false, smooth_escape: true,\n"
+      "       cut_ahead: true}\n");
   EXPECT_EQ(p.anticipation.lookahead, Lookahead::kPath);
   EXPECT_EQ(p.anticipation.horizon, 1.5);
   EXPECT_EQ(p.anticipation.samples, 6);
@@ -298,6 +301,7 @@ TEST(CameraProfile, ReadsTheAnticipationAndCutsBlocks) {
   EXPECT_TRUE(p.cuts.backing_up);
   EXPECT_FALSE(p.cuts.stuck);
   EXPECT_TRUE(p.cuts.smooth_escape);
+  EXPECT_TRUE(p.cuts.cut_ahead);
 }
 
 TEST(CameraProfile, BadAnticipationValuesNameTheLineAndWhatWasExpected) {
@@ -318,6 +322,14 @@ TEST(CameraProfile, BadAnticipationValuesNameTheLineAndWhatWasExpected) {
       {"name: x\nanticipation:\n  max_jerk: 1e6\n", "anticipation.max_jerk"},
       {"name: x\nanticipation:\n  wieght: 1\n", "wieght"},
       {"name: x\ncuts:\n  stuck: maybe\n", ""},
+      {"name: x\ncuts:\n  cut_ahead: soon\n", "profile.yaml:3"},
+      // cut_ahead acts only where the planner's escapes would: refused without them.
+      {"name: x\ncuts: {smooth_escape: true, cut_ahead: true}\n", "cuts.cut_ahead needs"},
+      {"name: x\nanticipation: {lookahead: motion}\ncuts: {cut_ahead: true}\n",
+       "smooth_escape: true"},
+      {"name: x\nanticipation: {lookahead: motion, plan_seconds: 0}\n"
+       "cuts: {smooth_escape: true, cut_ahead: true}\n",
+       "anticipation.plan_seconds > 0"},
   };
   for (const auto& c : cases) {
     try {

@@ -8,10 +8,11 @@
 // move longer than max_speed x dt must carry the cut flag. Cuts are counted from the trace's
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
 // pooled over each family of scenes; discretionary cuts (any reason but visibility-lost) at
-// or below 2 per minute of EACH scene. On each thesis scene the anticipating camera's jerk
-// p99 must not exceed the reactive camera's. On the shipped scenes the path camera (preset
-// anticipating-path) is held to the same per-scene checks but the jerk one. Jerk p99 of both
-// cameras is printed per scene for the record (docs/CAMERA.md has the table).
+// or below 2 per minute of EACH scene. On each thesis scene and each of the issue's scenes
+// the anticipating camera's jerk p99 must not exceed the reactive camera's. On the shipped
+// scenes the path camera (preset anticipating-path) is held to the same per-scene checks but
+// the jerk one. Jerk p99 of both cameras is printed per scene for the record (docs/CAMERA.md
+// has the table).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -292,9 +293,12 @@ TEST(AnticipatingCamera, OnEveryThesisSceneKeepsTheLookAtVisibleClearAndCutsRare
 }
 
 // The issue's scenes (experiments/scenes/anticipation/: switchback, colonnade, people
-// crossing, sliding door, traffic, courtyard, two rooms), movers included.
+// crossing, sliding door, traffic, courtyard, two rooms), movers included. Jerk p99 no worse
+// than the reactive camera's on each of them too: on sliding-door, where the door shuts
+// between camera and character, escaping frame by frame through the closing gap made it
+// 6,802 m/s^3 against 600 (cuts.cut_ahead cuts there instead).
 TEST(AnticipatingCamera, OnTheIssuesMoverScenesKeepsTheLookAtVisibleClearAndCutsRarely) {
-  EXPECT_LE(run_shipped("/anticipation", /*jerk_no_worse=*/false), 2.0);
+  EXPECT_LE(run_shipped("/anticipation", /*jerk_no_worse=*/true), 2.0);
 }
 
 TEST(AnticipatingCamera, OnSeededSwitchbacksKeepsTheLookAtVisibleClearAndCutsRarely) {
