@@ -96,6 +96,31 @@ bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& 
   return false;
 }
 
+std::uint32_t SceneAtTime::static_blocked(const Eigen::Vector3d& a,
+                                          std::span<const Eigen::Vector3d> ends) const {
+  std::uint32_t blocked = scene_->triangle_index().segments_blocked(a, ends);
+  if (scene_->solids().empty()) return blocked;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (blocked & (1u << i)) continue;
+    const Eigen::Vector3d& b = ends[i];
+    const bool boxes_block = nearby_ && nearby_->covers(a, b)
+                                 ? nearby_->segment_blocked(a, b)
+                                 : scene_->solid_tree().segment_blocked(a, b);
+    if (boxes_block) blocked |= 1u << i;
+  }
+  return blocked;
+}
+
+std::uint32_t SceneAtTime::lines_of_sight(const Eigen::Vector3d& a,
+                                          std::span<const Eigen::Vector3d> ends) const {
+  std::uint32_t blocked = static_blocked(a, ends);
+  for (std::size_t i = 0; i < ends.size() && !boxes_.empty(); ++i) {
+    if (!(blocked & (1u << i)) && mover_blocks(a, ends[i])) blocked |= 1u << i;
+  }
+  const std::uint32_t all = ends.size() >= 32 ? ~0u : (1u << ends.size()) - 1;
+  return ~blocked & all;
+}
+
 std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
                                                  const Eigen::Vector3d& b) const {
   std::optional<SurfaceHit> best = scene_->first_hit(a, b);

@@ -80,7 +80,7 @@ TEST(BoundedViolation, IsTheViolationUnlessTheCandidateLostAndThenALowerBoundTha
       const double before = 3 * u(rng);
       const double bound = u(rng) < 0.1 ? std::numeric_limits<double>::infinity()
                                         : before + c.weight() * u(rng) * 1.2;
-      const double got = bounded->violation_until(values, before, bound);
+      const double got = bounded->violation_until(values, before, bound, 0.0);
       if (before + c.weight() * full < bound) {
         ASSERT_EQ(got, full) << c.kind() << " trial " << trial;  // bit for bit
         ++exact;
