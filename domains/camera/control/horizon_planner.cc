@@ -192,8 +192,10 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       if (!(cost < best_cost)) break;  // costs only grow: it cannot win any more
       const double t = m * dt;
       const Eigen::Vector3d x = q.position(t);
-      if (geometry_now.clearance(x, radius + 1e-6) < radius ||
-          !geometry_now.line_of_sight(previous, x)) {
+      // The sight line first: it costs a ray, clearance a point query and, on a level, the
+      // map's solid volume (about three rays); either blocked decides.
+      if (!geometry_now.line_of_sight(previous, x) ||
+          geometry_now.clearance(x, radius + 1e-6) < radius) {
         cost += kBlockedPrice;
       }
       if (prediction.size() > 0 && t < prediction.sample(0).ahead) {
@@ -208,7 +210,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       const SceneAtTime& g = prediction.geometry(k);
       const Eigen::Vector3d x = q.position(std::max(s.ahead, dt));
       double hidden = g.line_of_sight(x, s.look_at) ? 0.0 : 1.0;
-      if (g.clearance(x, radius + 1e-6) < radius || !g.line_of_sight(previous, x)) {
+      if (!g.line_of_sight(previous, x) || g.clearance(x, radius + 1e-6) < radius) {
         hidden += 1;
         cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
       }

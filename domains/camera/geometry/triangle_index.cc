@@ -171,9 +171,9 @@ struct NearestSearch {
   std::uint32_t triangle = 0;
   Eigen::Vector3d point;
 
-  // True when triangle t's bounding box is already farther from p than `best` (plus
-  // `margin`): the triangle itself is at least as far, so the exact test below could not
-  // accept it. Embree calls back for every triangle of a leaf whose node meets the query
+  // True when triangle t's bounding box, or its plane, is already farther from p than `best`
+  // (plus `margin`): the triangle itself is at least as far, so the exact test below could
+  // not accept it. Embree calls back for every triangle of a leaf whose node meets the query
   // sphere, most of them well outside it; this rejects those for the price of a box test.
   // `margin` (1/1000 of slack, about 2e-9 of the coordinates' scale) covers the exact test's own rounding, so a
   // rejected triangle is one whose computed distance is not below `best` either: the
@@ -190,7 +190,13 @@ struct NearestSearch {
       d2 += e * e;
     }
     const double reach = best + margin;
-    return d2 > reach * reach;
+    if (d2 > reach * reach) return true;
+    // Then the triangle's plane: a wall's box holds the point, its plane may be far.
+    const Eigen::Vector3d a(v0[0], v0[1], v0[2]);
+    const Eigen::Vector3d n =
+        (Eigen::Vector3d(v1[0], v1[1], v1[2]) - a).cross(Eigen::Vector3d(v2[0], v2[1], v2[2]) - a);
+    const double height = n.dot(p - a);
+    return height * height > reach * reach * n.squaredNorm();
   }
 };
 
