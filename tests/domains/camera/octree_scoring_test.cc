@@ -120,13 +120,10 @@ TEST_P(Bounded, IsTheViolationUnlessTheCandidateLostAndThenALowerBoundThatProves
     }
   }
   // Every case is met: the test would notice a bound that never stops or always does. On a
-  // level all the sight lines of a count go to Embree as one packet: nothing to stop early.
+  // level the sight lines go to Embree as packets: only the body's centre ray is left out
+  // when its 8 corners already lost, so fewer counts stop early.
   EXPECT_GT(exact, 500);
-  if (level) {
-    EXPECT_EQ(stopped_early, 0);
-  } else {
-    EXPECT_GT(stopped_early, 100);
-  }
+  EXPECT_GT(stopped_early, level ? 50 : 100);
   EXPECT_GT(lost_at_the_end, 10);
 }
 
