@@ -26,6 +26,9 @@ OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView&
   if (expensive.size() > static_cast<std::size_t>(kMaxExpensive)) return;
   expensive_count_ = static_cast<int>(expensive.size());
   for (int i = 0; i < expensive_count_; ++i) order_[i] = i;
+  // On box scenes the counts stop early ray by ray and the view's order measured as fast
+  // (the city with 20 movers: 2-5% slower at p99 reordered); levels answer in packets.
+  if (!view.scene().packs_sight_lines()) return;
   std::stable_sort(order_, order_ + expensive_count_, [&](int a, int b) {
     return ask_rank(problem.constraint(expensive[static_cast<std::size_t>(a)]).kind()) <
            ask_rank(problem.constraint(expensive[static_cast<std::size_t>(b)]).kind());
