@@ -130,8 +130,9 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
     const csp::ConstraintId id = expensive[i];
     const csp::Constraint& c = problem_->constraint(id);
     const BoundedViolation* bounded = view_->expensive_bounded()[i];
-    const double violation =
-        bounded && !c.is_hard() ? bounded->violation_until(x, out.cost, bound, 0.0) : c.violation(x);
+    const double violation = bounded && !c.is_hard()
+                                 ? bounded->violation_until(x, out.cost, bound, 0.0)
+                                 : c.violation(x);
     if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
     if (c.is_hard()) continue;
     out.cost += c.weight() * violation;

@@ -175,9 +175,9 @@ struct NearestSearch {
   // (plus `margin`): the triangle itself is at least as far, so the exact test below could
   // not accept it. Embree calls back for every triangle of a leaf whose node meets the query
   // sphere, most of them well outside it; this rejects those for the price of a box test.
-  // `margin` (1/1000 of slack, about 2e-9 of the coordinates' scale) covers the exact test's own rounding, so a
-  // rejected triangle is one whose computed distance is not below `best` either: the
-  // answer is the same as without the test.
+  // `margin` (1/1000 of slack, about 2e-9 of the coordinates' scale) covers the exact
+  // test's own rounding, so a rejected triangle is one whose computed distance is not below
+  // `best` either: the answer is the same as without the test.
   bool triangle_beyond(std::uint32_t t) const {
     const float* v0 = mesh.vertices + 3 * static_cast<std::size_t>(mesh.triangles[3 * t]);
     const float* v1 = mesh.vertices + 3 * static_cast<std::size_t>(mesh.triangles[3 * t + 1]);
