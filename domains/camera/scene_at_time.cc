@@ -167,6 +167,22 @@ double SceneAtTime::clearance(const Eigen::Vector3d& p, double limit) const {
   return grouped_mover_clearance(p, scene_->clearance(p, limit), limit);
 }
 
+bool SceneAtTime::closer_than(const Eigen::Vector3d& p, double r, double limit) const {
+  const TriangleIndex& triangles = scene_->triangle_index();
+  if (triangles.empty() || !(r > 0) || !(r <= limit) || !std::isfinite(limit)) {
+    return clearance(p, limit) < r;
+  }
+  // Scene::clearance's parts, each deciding alone: a box, a triangle or a mover closer than
+  // r, or p in the level's solid matter (whose clearance is negative).
+  if (const auto box = scene_->solid_tree().nearest(p, limit); box && box->signed_distance < r) {
+    return true;
+  }
+  if (triangles.nearest(p, r)) return true;
+  const Level* level = scene_->level();
+  if (level != nullptr && level->solid && level->solid->solid_at(p)) return true;
+  return grouped_mover_clearance(p, limit, limit) < r;
+}
+
 double SceneAtTime::grouped_mover_clearance(const Eigen::Vector3d& p, double d,
                                             double limit) const {
   for (std::size_t g = 0; g < group_bounds_.size(); ++g) {

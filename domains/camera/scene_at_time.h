@@ -88,6 +88,11 @@ class SceneAtTime {
   std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   double clearance(const Eigen::Vector3d& p,
                    double limit = std::numeric_limits<double>::infinity()) const;
+  // clearance(p, limit) < r, for 0 < r <= limit: is p inside clearance r of something?
+  // On a level it asks only as far as the answer needs: the level's triangles within r
+  // first, the map's solid volume only when none is (clearance() asks it first, for the
+  // sign of its value, and then the depth inside solid matter).
+  bool closer_than(const Eigen::Vector3d& p, double r, double limit) const;
   std::optional<NearestSurface> nearest_surface(
       const Eigen::Vector3d& p, double limit = std::numeric_limits<double>::infinity()) const;
   bool open_at(const Eigen::Vector3d& p) const;

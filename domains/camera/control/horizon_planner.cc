@@ -239,7 +239,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     } else {
       for (int j = 0; j < kNear && cost < best_cost; ++j) {
         const auto v = static_cast<std::size_t>(j);
-        if (!near_path[v] || geometry_now.clearance(near_x[v], radius + 1e-6) < radius) {
+        if (!near_path[v] || geometry_now.closer_than(near_x[v], radius, radius + 1e-6)) {
           cost += kBlockedPrice;
         }
         if (near_has_soon[v] && !near_soon[v]) cost += kBlockedPrice;
@@ -248,7 +248,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
         const auto v = static_cast<std::size_t>(k);
         const MotionPrediction::Sample& s = prediction.sample(k);
         double hidden = sees[v] ? 0.0 : 1.0;
-        if (!path_clear[v] || prediction.geometry(k).clearance(xs[v], radius + 1e-6) < radius) {
+        if (!path_clear[v] || prediction.geometry(k).closer_than(xs[v], radius, radius + 1e-6)) {
           hidden += 1;
           cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
         }

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <string>
 
 #include "domains/camera/scene_at_time.h"
 
@@ -250,6 +251,49 @@ TEST(SceneAtTime, FansOfSightLinesOnALevelAnswerAsLineOfSightOneByOne) {
   EXPECT_GT(clear, 1000);
   EXPECT_GT(blocked, 1000);
   EXPECT_GT(by_mover, 20);
+}
+
+// closer_than(p, r, limit) is clearance(p, limit) < r, on a level with a solid volume (a
+// slab below the ground), boxes and movers: every part that can decide it is exercised.
+class SlabBelow : public SolidVolume {
+ public:
+  bool solid_at(const Eigen::Vector3d& p) const override { return p.y() < -1; }
+  std::string describe() const override { return "slab"; }
+};
+
+TEST(SceneAtTime, CloserThanIsClearanceBelowTheRadius) {
+  std::mt19937 rng(41);
+  World world;
+  Scene scene = random_scene(rng, world, 20);
+  auto level = std::make_shared<Level>();
+  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5), when(-1, 11),
+      radius(0.05, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
+    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
+    for (int k = 0; k < 3; ++k) {
+      level->mesh.vertices.push_back(
+          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
+    }
+    level->mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  level->solid = std::make_shared<SlabBelow>();
+  scene.set_level(level);
+  SceneAtTime now(scene);
+  int closer = 0, clear = 0, solid = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    if (trial % 100 == 0) now.set_time(when(rng));
+    const Eigen::Vector3d p(coord(rng), coord(rng) * 0.3, coord(rng));
+    const double r = radius(rng);
+    const double limit = trial % 2 == 0 ? r : r + 1e-6;
+    const bool want = now.clearance(p, limit) < r;
+    ASSERT_EQ(now.closer_than(p, r, limit), want) << "trial " << trial;
+    (want ? closer : clear)++;
+    solid += p.y() < -1;
+  }
+  EXPECT_GT(closer, 2000);
+  EXPECT_GT(clear, 2000);
+  EXPECT_GT(solid, 1000);
 }
 
 TEST(SceneAtTime, AMoverStandsAtItsEndsBeforeTheFirstAndAfterTheLastKeyframe) {
