@@ -96,6 +96,31 @@ bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& 
   return false;
 }
 
+std::uint32_t SceneAtTime::static_blocked(const Eigen::Vector3d& a,
+                                          std::span<const Eigen::Vector3d> ends) const {
+  std::uint32_t blocked = scene_->triangle_index().segments_blocked(a, ends);
+  if (scene_->solids().empty()) return blocked;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (blocked & (1u << i)) continue;
+    const Eigen::Vector3d& b = ends[i];
+    const bool boxes_block = nearby_ && nearby_->covers(a, b)
+                                 ? nearby_->segment_blocked(a, b)
+                                 : scene_->solid_tree().segment_blocked(a, b);
+    if (boxes_block) blocked |= 1u << i;
+  }
+  return blocked;
+}
+
+std::uint32_t SceneAtTime::lines_of_sight(const Eigen::Vector3d& a,
+                                          std::span<const Eigen::Vector3d> ends) const {
+  std::uint32_t blocked = static_blocked(a, ends);
+  for (std::size_t i = 0; i < ends.size() && !boxes_.empty(); ++i) {
+    if (!(blocked & (1u << i)) && mover_blocks(a, ends[i])) blocked |= 1u << i;
+  }
+  const std::uint32_t all = ends.size() >= 32 ? ~0u : (1u << ends.size()) - 1;
+  return ~blocked & all;
+}
+
 std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
                                                  const Eigen::Vector3d& b) const {
   std::optional<SurfaceHit> best = scene_->first_hit(a, b);
@@ -140,6 +165,22 @@ double SceneAtTime::clearance(const Eigen::Vector3d& p, double limit) const {
     return grouped_mover_clearance(p, d, limit);
   }
   return grouped_mover_clearance(p, scene_->clearance(p, limit), limit);
+}
+
+bool SceneAtTime::closer_than(const Eigen::Vector3d& p, double r, double limit) const {
+  const TriangleIndex& triangles = scene_->triangle_index();
+  if (triangles.empty() || !(r > 0) || !(r <= limit) || !std::isfinite(limit)) {
+    return clearance(p, limit) < r;
+  }
+  // Scene::clearance's parts, each deciding alone: a box, a triangle or a mover closer than
+  // r, or p in the level's solid matter (whose clearance is negative).
+  if (const auto box = scene_->solid_tree().nearest(p, limit); box && box->signed_distance < r) {
+    return true;
+  }
+  if (triangles.nearest(p, r)) return true;
+  const Level* level = scene_->level();
+  if (level != nullptr && level->solid && level->solid->solid_at(p)) return true;
+  return grouped_mover_clearance(p, limit, limit) < r;
 }
 
 double SceneAtTime::grouped_mover_clearance(const Eigen::Vector3d& p, double d,

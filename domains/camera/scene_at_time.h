@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "domains/camera/geometry/aabb.h"
@@ -68,10 +69,30 @@ class SceneAtTime {
                                  : scene_->solid_tree().segment_blocked(a, b);
     return !boxes_block && !scene_->triangle_index().segment_blocked(a, b) && !mover_blocks(a, b);
   }
+  // Sight lines from one point `a` to each of `ends` (at most TriangleIndex::kMaxFan): bit i
+  // of the result is set when line_of_sight(a, ends[i]) holds. The level's triangles answer
+  // all of them at once, as ray packets (triangle_index.h); boxes and movers line by line.
+  std::uint32_t lines_of_sight(const Eigen::Vector3d& a,
+                               std::span<const Eigen::Vector3d> ends) const;
+  // The part of it that does not depend on time: bit i set when a static box or a level
+  // triangle blocks a -> ends[i]. The same for every SceneAtTime of a scene, so the K
+  // predicted samples of one candidate ask it once (and mover_blocks of each sample).
+  std::uint32_t static_blocked(const Eigen::Vector3d& a,
+                               std::span<const Eigen::Vector3d> ends) const;
+  // True when the scene has a level's triangles, whose sight lines are cheaper asked together
+  // (lines_of_sight) than one by one; box scenes gain nothing from it and lose the early stop
+  // of a count.
+  bool packs_sight_lines() const { return !scene_->triangle_index().empty(); }
+
   // A mover hit has source kMover and the mover's index.
   std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   double clearance(const Eigen::Vector3d& p,
                    double limit = std::numeric_limits<double>::infinity()) const;
+  // clearance(p, limit) < r, for 0 < r <= limit: is p inside clearance r of something?
+  // On a level it asks only as far as the answer needs: the level's triangles within r
+  // first, the map's solid volume only when none is (clearance() asks it first, for the
+  // sign of its value, and then the depth inside solid matter).
+  bool closer_than(const Eigen::Vector3d& p, double r, double limit) const;
   std::optional<NearestSurface> nearest_surface(
       const Eigen::Vector3d& p, double limit = std::numeric_limits<double>::infinity()) const;
   bool open_at(const Eigen::Vector3d& p) const;

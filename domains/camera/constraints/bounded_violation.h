@@ -4,8 +4,10 @@
 // as soon as the sum reaches the best cost found so far. The body-visibility and
 // future-visibility constraints count blocked sight lines (9 and K rays), so most of their
 // time goes on candidates that lose anyway. A constraint with this interface is told the
-// cost summed before it and the bound, and may stop counting as soon as a lower bound v of
-// its violation already gives cost_before + weight x v >= bound.
+// cost summed before it, the cost of the one term known to come after it in the sum (0 when
+// none is known; a search that asks the constraints out of the sum's order knows some), and
+// the bound, and may stop counting as soon as a lower bound v of its violation already
+// gives (cost_before + weight x v) + cost_after >= bound.
 //
 // Exactness: when it does not stop, it returns exactly violation(values), computed the same
 // way, so a candidate that survives is scored to the last bit as before. When it stops, the
@@ -21,9 +23,10 @@ namespace sightline::camera {
 class BoundedViolation {
  public:
   virtual ~BoundedViolation() = default;
-  // violation(values), or a lower bound v of it with cost_before + weight() x v >= bound.
+  // violation(values), or a lower bound v of it with
+  // (cost_before + weight() x v) + cost_after >= bound.
   virtual double violation_until(std::span<const double> values, double cost_before,
-                                 double bound) const = 0;
+                                 double bound, double cost_after) const = 0;
 
  protected:
   BoundedViolation() = default;

@@ -37,13 +37,13 @@ class FutureVisibleConstraint : public csp::Constraint, public BoundedViolation 
                                 std::span<double> gradient) const override;
   bool has_exact_gradient() const override { return true; }
   // Stops once the hidden samples' weight is enough (bounded_violation.h).
-  double violation_until(std::span<const double> values, double cost_before,
-                         double bound) const override;
+  double violation_until(std::span<const double> values, double cost_before, double bound,
+                         double cost_after) const override;
 
  private:
   // The loop of both: stops early only when `bounded`.
   double hidden_fraction(std::span<const double> values, bool bounded, double cost_before,
-                         double bound) const;
+                         double bound, double cost_after) const;
 
   const MotionPrediction* prediction_;
 };

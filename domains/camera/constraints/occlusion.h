@@ -86,8 +86,8 @@ class BodyVisibilityConstraint : public csp::Constraint, public BoundedViolation
   double violation_and_gradient(std::span<const double> values,
                                 std::span<double> gradient) const override;
   bool has_exact_gradient() const override { return true; }
-  double violation_until(std::span<const double> values, double cost_before,
-                         double bound) const override;
+  double violation_until(std::span<const double> values, double cost_before, double bound,
+                         double cost_after) const override;
 
  private:
   const SceneAtTime* scene_;

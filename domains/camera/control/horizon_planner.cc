@@ -246,37 +246,77 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     if (!geometry_now.line_of_sight(now.position, first)) continue;
     // Sight and room along the rest, at the prediction's times, cheapest-first cut-off.
     double cost = cheap[u];
-    Eigen::Vector3d previous = first;
     // Room over the next few frames, where the camera's momentum decides: a trajectory
     // that runs into a wall there leaves next frame's plans no usable first frame.
     // And sight there, of the look-at point on its way to the first predicted one (a
     // sight line the character's next steps will cut is lost before any frame can react).
-    for (int m : {2, 4, 8}) {
-      if (!(cost < best_cost)) break;  // costs only grow: it cannot win any more
-      const double t = m * dt;
-      const Eigen::Vector3d x = q.position(t);
-      if (geometry_now.clearance(x, radius + 1e-6) < radius ||
-          !geometry_now.line_of_sight(previous, x)) {
-        cost += kBlockedPrice;
+    //
+    // Priced in two passes, to the same cost: first every sight line (rays) with the
+    // clearance checks not yet known (counted clear), a lower bound of the cost (sums of
+    // non-negative terms in floating point are monotone), so a trajectory that loses on its
+    // sight lines alone never asks clearance (a point query and, on a level, the map's solid
+    // volume: about three rays' time); then, for one that may still win, the cost summed in
+    // the order the checks come along the trajectory, clearance asked where the path is
+    // clear and only while the sum is below the best's.
+    constexpr int kNear = 3;
+    constexpr int kNearFrames[kNear] = {2, 4, 8};
+    std::array<Eigen::Vector3d, kNear> near_x;
+    std::array<bool, kNear> near_path{}, near_soon{}, near_has_soon{};
+    const int samples = prediction.size();
+    std::array<Eigen::Vector3d, Anticipation::kMaxSamples> xs;
+    std::array<bool, Anticipation::kMaxSamples> sees{}, path_clear{};
+    int known = 0;  // checks (near frames, then samples) whose sight lines are known
+    double at_least = cost;
+    for (; known < kNear + samples && at_least < best_cost; ++known) {
+      if (known < kNear) {
+        const auto j = static_cast<std::size_t>(known);
+        const double t = kNearFrames[j] * dt;
+        near_x[j] = q.position(t);
+        near_path[j] = geometry_now.line_of_sight(known == 0 ? first : near_x[j - 1], near_x[j]);
+        if (!near_path[j]) at_least += kBlockedPrice;
+        near_has_soon[j] = prediction.size() > 0 && t < prediction.sample(0).ahead;
+        if (near_has_soon[j]) {
+          const double w = t / prediction.sample(0).ahead;
+          const Eigen::Vector3d soon = (1 - w) * look + w * prediction.sample(0).look_at;
+          near_soon[j] = geometry_now.line_of_sight(near_x[j], soon);
+          if (!near_soon[j]) at_least += kBlockedPrice;
+        }
+        continue;
       }
-      if (prediction.size() > 0 && t < prediction.sample(0).ahead) {
-        const double w = t / prediction.sample(0).ahead;
-        const Eigen::Vector3d soon = (1 - w) * look + w * prediction.sample(0).look_at;
-        if (!geometry_now.line_of_sight(x, soon)) cost += kBlockedPrice;
-      }
-      previous = x;
-    }
-    for (int k = 0; k < prediction.size() && cost < best_cost; ++k) {
-      const MotionPrediction::Sample& s = prediction.sample(k);
-      const SceneAtTime& g = prediction.geometry(k);
-      const Eigen::Vector3d x = q.position(std::max(s.ahead, dt));
-      double hidden = g.line_of_sight(x, s.look_at) ? 0.0 : 1.0;
-      if (g.clearance(x, radius + 1e-6) < radius || !g.line_of_sight(previous, x)) {
+      const int sample = known - kNear;
+      const auto k = static_cast<std::size_t>(sample);
+      const MotionPrediction::Sample& s = prediction.sample(sample);
+      const SceneAtTime& g = prediction.geometry(sample);
+      xs[k] = q.position(std::max(s.ahead, dt));
+      sees[k] = g.line_of_sight(xs[k], s.look_at);
+      path_clear[k] = g.line_of_sight(sample == 0 ? near_x[kNear - 1] : xs[k - 1], xs[k]);
+      double hidden = sees[k] ? 0.0 : 1.0;
+      if (!path_clear[k]) {
         hidden += 1;
-        cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
+        at_least += kBlockedPrice * s.weight;
       }
-      cost += sight_weight * s.weight * hidden;
-      previous = x;
+      at_least += sight_weight * s.weight * hidden;
+    }
+    if (known < kNear + samples || !(at_least < best_cost)) {
+      cost = at_least;  // lost: a lower bound of its cost already reaches the best's
+    } else {
+      for (int j = 0; j < kNear && cost < best_cost; ++j) {
+        const auto v = static_cast<std::size_t>(j);
+        if (!near_path[v] || geometry_now.closer_than(near_x[v], radius, radius + 1e-6)) {
+          cost += kBlockedPrice;
+        }
+        if (near_has_soon[v] && !near_soon[v]) cost += kBlockedPrice;
+      }
+      for (int k = 0; k < samples && cost < best_cost; ++k) {
+        const auto v = static_cast<std::size_t>(k);
+        const MotionPrediction::Sample& s = prediction.sample(k);
+        double hidden = sees[v] ? 0.0 : 1.0;
+        if (!path_clear[v] || prediction.geometry(k).closer_than(xs[v], radius, radius + 1e-6)) {
+          hidden += 1;
+          cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
+        }
+        cost += sight_weight * s.weight * hidden;
+      }
     }
     if (cost < best_cost) {
       best_cost = cost;

@@ -3,11 +3,54 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 namespace sightline::camera {
 
+namespace {
+
+// Where a constraint comes in the order the expensive ones are asked in (see the header).
+int ask_rank(std::string_view kind) {
+  if (kind == "camera.look_at_visible") return 0;
+  if (kind == "camera.future_visible") return 1;
+  if (kind == "camera.visible_fraction") return 2;
+  if (kind == "camera.clearance") return 4;
+  return 3;
+}
+
+}  // namespace
+
 OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView& view)
-    : problem_(&problem), view_(&view) {}
+    : problem_(&problem), view_(&view) {
+  const std::vector<csp::ConstraintId>& expensive = view.expensive();
+  if (expensive.size() > static_cast<std::size_t>(kMaxExpensive)) return;
+  expensive_count_ = static_cast<int>(expensive.size());
+  for (int i = 0; i < expensive_count_; ++i) order_[i] = i;
+  // On box scenes the counts stop early ray by ray and the view's order measured as fast
+  // (the city with 20 movers: 2-5% slower at p99 reordered); levels answer in packets.
+  if (!view.scene().packs_sight_lines()) return;
+  std::stable_sort(order_, order_ + expensive_count_, [&](int a, int b) {
+    return ask_rank(problem.constraint(expensive[static_cast<std::size_t>(a)]).kind()) <
+           ask_rank(problem.constraint(expensive[static_cast<std::size_t>(b)]).kind());
+  });
+}
+
+double OctreeSearch::known_cost(double cheap_cost, int skip, double* after) const {
+  double sum = cheap_cost;
+  int after_count = 0;
+  double after_term = 0;
+  for (int i = 0; i < expensive_count_; ++i) {
+    if (!known_[i]) continue;
+    if (skip >= 0 && i > skip) {
+      ++after_count;
+      after_term = term_[i];
+      continue;
+    }
+    sum += term_[i];
+  }
+  if (after != nullptr) *after = after_count == 1 ? after_term : 0.0;
+  return sum;
+}
 
 Eigen::Vector3d OctreeSearch::clamp(const Eigen::Vector3d& p) const {
   Eigen::Vector3d q;
@@ -50,17 +93,46 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
     out.valid = true;
     return out;
   }
-  // The sight-line tests, cheapest first (the view's order). Ali: a candidate counts only if
-  // the look-at point is visible from it (whether the profile makes that constraint hard or
-  // soft), and only if it breaks no hard constraint. The soft counts stop as soon as the
+  // The sight-line tests. Ali: a candidate counts only if the look-at point is visible from
+  // it (whether the profile makes that constraint hard or soft), and only if it breaks no
+  // hard constraint. Asked in order_ (see the header); the soft counts stop as soon as the
   // candidate has lost (BoundedViolation): the same candidates survive, with the same sums.
   const std::vector<csp::ConstraintId>& expensive = view_->expensive();
+  if (expensive_count_ > 0) {
+    const double cheap_cost = out.cost;
+    for (int i = 0; i < expensive_count_; ++i) known_[i] = false;
+    for (int k = 0; k < expensive_count_; ++k) {
+      const int i = order_[k];
+      const csp::ConstraintId id = expensive[static_cast<std::size_t>(i)];
+      const csp::Constraint& c = problem_->constraint(id);
+      const BoundedViolation* bounded = view_->expensive_bounded()[static_cast<std::size_t>(i)];
+      double violation;
+      if (bounded && !c.is_hard()) {
+        double after = 0;
+        const double before = known_cost(cheap_cost, i, &after);
+        violation = bounded->violation_until(x, before, bound, after);
+      } else {
+        violation = c.violation(x);
+      }
+      if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
+      if (c.is_hard()) continue;
+      term_[i] = c.weight() * violation;
+      known_[i] = true;
+      if (known_cost(cheap_cost, -1, nullptr) >= bound) return out;
+    }
+    // Every soft term known: the sum in the view's order, as the loop below makes it.
+    out.cost = known_cost(cheap_cost, -1, nullptr);
+    if (out.cost >= bound) return out;
+    out.valid = true;
+    return out;
+  }
   for (std::size_t i = 0; i < expensive.size(); ++i) {
     const csp::ConstraintId id = expensive[i];
     const csp::Constraint& c = problem_->constraint(id);
     const BoundedViolation* bounded = view_->expensive_bounded()[i];
-    const double violation = bounded && !c.is_hard() ? bounded->violation_until(x, out.cost, bound)
-                                                     : c.violation(x);
+    const double violation = bounded && !c.is_hard()
+                                 ? bounded->violation_until(x, out.cost, bound, 0.0)
+                                 : c.violation(x);
     if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
     if (c.is_hard()) continue;
     out.cost += c.weight() * violation;

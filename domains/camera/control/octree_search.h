@@ -13,10 +13,20 @@
 //     handled nominally).
 // Scoring evaluates the cheap constraints first and stops as soon as a candidate cannot beat
 // the best one, so the sight-line queries run only for candidates that matter; the body and
-// future visibility counts stop mid-way too (BoundedViolation). Testing clearance (hard)
-// before them was measured and dropped: it cost more instructions than it saved, on the city
-// with movers (1.4%) and on a level walk (0.5%), where clearance asks Embree and the level's
-// solid volume.
+// future visibility counts stop mid-way too (BoundedViolation).
+// On a level (sight lines answered as Embree ray packets), the expensive constraints are
+// asked in the order that drops losing candidates soonest, not in the problem's order: the
+// look-at sight line (one ray, hard), then the future visibility (K rays), the body
+// visibility (9 rays), and clearance (a point query and the map's solid volume) last. On box
+// scenes the view's order stays (reordered, the city with 20 movers measured 2-5% slower).
+// In the slowest 2% of frames on oa_thor-walk4, asked in the problem's order, 44% of the
+// candidates that reach these tests were dropped by the future visibility, after paying for
+// the body's rays and clearance; 23% by the body, 7% by the look-at, 5% by clearance
+// (docs/BENCHMARKS.md, issue 13). The order changes nothing but the time: a candidate is
+// dropped only when a lower bound of its cost, the problem-order sum with the terms not yet
+// known counted as 0 (floating-point addition is monotone, so that is never above the full
+// sum), reaches the bound, and a survivor's cost is summed in the problem's order, bit for
+// bit the plain loop's.
 // No allocation per candidate.
 #pragma once
 
@@ -64,8 +74,21 @@ class OctreeSearch {
   std::uint64_t evaluations() const { return evaluations_; }
 
  private:
+  // The sum of the soft terms known so far in the view's order (unknown ones are 0): with
+  // `skip` >= 0 the terms before `skip` only, into *before, and the single known term after
+  // it into *after (0 when there are none or several: then a weaker, still lower, bound).
+  double known_cost(double cheap_cost, int skip, double* after) const;
+
+  static constexpr int kMaxExpensive = 8;
   const csp::Problem* problem_;
   const CameraProblemView* view_;
+  // The order the expensive constraints are asked in (indices into view_->expensive()), or
+  // none (expensive_count_ = 0: more than kMaxExpensive, asked in the view's order).
+  int order_[kMaxExpensive] = {};
+  int expensive_count_ = 0;
+  // Per candidate: the soft terms (weight x violation) known so far, by view index.
+  double term_[kMaxExpensive] = {};
+  bool known_[kMaxExpensive] = {};
   std::optional<double> orientation_override_, height_override_;
   double values_[3] = {0, 0, 0};
   std::uint64_t evaluations_ = 0;

@@ -166,9 +166,38 @@ struct NearestSearch {
   Eigen::Vector3d p;
   double slack = 0;  // added to the float radius Embree culls with
   double best = 0;   // distance of the best triangle so far (starts at the limit)
+  double margin = 0;  // see triangle_beyond
   bool found = false;
   std::uint32_t triangle = 0;
   Eigen::Vector3d point;
+
+  // True when triangle t's bounding box, or its plane, is already farther from p than `best`
+  // (plus `margin`): the triangle itself is at least as far, so the exact test below could
+  // not accept it. Embree calls back for every triangle of a leaf whose node meets the query
+  // sphere, most of them well outside it; this rejects those for the price of a box test.
+  // `margin` (1/1000 of slack, about 2e-9 of the coordinates' scale) covers the exact
+  // test's own rounding, so a rejected triangle is one whose computed distance is not below
+  // `best` either: the answer is the same as without the test.
+  bool triangle_beyond(std::uint32_t t) const {
+    const float* v0 = mesh.vertices + 3 * static_cast<std::size_t>(mesh.triangles[3 * t]);
+    const float* v1 = mesh.vertices + 3 * static_cast<std::size_t>(mesh.triangles[3 * t + 1]);
+    const float* v2 = mesh.vertices + 3 * static_cast<std::size_t>(mesh.triangles[3 * t + 2]);
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = std::min({v0[k], v1[k], v2[k]});
+      const double hi = std::max({v0[k], v1[k], v2[k]});
+      const double e = p[k] < lo ? lo - p[k] : (p[k] > hi ? p[k] - hi : 0.0);
+      d2 += e * e;
+    }
+    const double reach = best + margin;
+    if (d2 > reach * reach) return true;
+    // Then the triangle's plane: a wall's box holds the point, its plane may be far.
+    const Eigen::Vector3d a(v0[0], v0[1], v0[2]);
+    const Eigen::Vector3d n =
+        (Eigen::Vector3d(v1[0], v1[1], v1[2]) - a).cross(Eigen::Vector3d(v2[0], v2[1], v2[2]) - a);
+    const double height = n.dot(p - a);
+    return height * height > reach * reach * n.squaredNorm();
+  }
 };
 
 // The point-query callback: Embree calls it for every triangle whose bounds meet the query
@@ -178,6 +207,7 @@ struct NearestSearch {
 bool nearest_callback(RTCPointQueryFunctionArguments* args) {
   auto* search = static_cast<NearestSearch*>(args->userPtr);
   const std::uint32_t t = args->primID;
+  if (search->triangle_beyond(t)) return false;
   const Eigen::Vector3d q = closest_on_triangle(search->p, search->mesh.vertex(t, 0),
                                                 search->mesh.vertex(t, 1),
                                                 search->mesh.vertex(t, 2));
@@ -334,6 +364,67 @@ bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vecto
   return ray.tfar < 0;  // set to -inf on a hit
 }
 
+std::uint32_t TriangleIndex::segments_blocked(const Eigen::Vector3d& a,
+                                              std::span<const Eigen::Vector3d> ends) const {
+  if (ends.size() > kMaxFan) {
+    throw std::invalid_argument("TriangleIndex::segments_blocked: more than kMaxFan segments");
+  }
+  std::uint32_t blocked = 0;
+  if (!impl_ || !all_finite(a)) return blocked;
+  // Each lane is the ray segment_blocked traces for its segment (the same extended ray, the
+  // same floats); segments that are points or not finite are answered one by one as there.
+  constexpr int kLanes = 8;
+  for (std::size_t first = 0; first < ends.size(); first += kLanes) {
+    RTCRay8 rays;
+    RTCRay single[kLanes];
+    alignas(32) int valid[kLanes] = {0, 0, 0, 0, 0, 0, 0, 0};
+    int active = 0;
+    for (int lane = 0; lane < kLanes && first + lane < ends.size(); ++lane) {
+      const Eigen::Vector3d& b = ends[first + lane];
+      if (!all_finite(b)) continue;
+      const Eigen::Vector3d d = b - a;
+      const double length = d.norm();
+      const double tol = tolerance(impl_->scale, a, b);
+      if (length <= tol) {
+        if (nearest(a, tol).has_value()) blocked |= 1u << (first + lane);
+        continue;
+      }
+      const double e = tol / length;
+      RTCRay& ray = single[lane];
+      extended_segment_ray(a - e * d, d, e, ray);
+      rays.org_x[lane] = ray.org_x;
+      rays.org_y[lane] = ray.org_y;
+      rays.org_z[lane] = ray.org_z;
+      rays.tnear[lane] = ray.tnear;
+      rays.dir_x[lane] = ray.dir_x;
+      rays.dir_y[lane] = ray.dir_y;
+      rays.dir_z[lane] = ray.dir_z;
+      rays.time[lane] = ray.time;
+      rays.tfar[lane] = ray.tfar;
+      rays.mask[lane] = ray.mask;
+      rays.id[lane] = ray.id;
+      rays.flags[lane] = ray.flags;
+      valid[lane] = -1;
+      ++active;
+    }
+    if (active == 0) continue;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    if (active == 1) {
+      // One ray (the 9th of a body's samples): a packet would cost more than the ray alone.
+      const int lane = static_cast<int>(std::find(valid, valid + kLanes, -1) - valid);
+      rtcOccluded1(impl_->scene, &context, &single[lane]);
+      rays.tfar[lane] = single[lane].tfar;
+    } else {
+      rtcOccluded8(valid, impl_->scene, &context, &rays);
+    }
+    for (int lane = 0; lane < kLanes; ++lane) {
+      if (valid[lane] != 0 && rays.tfar[lane] < 0) blocked |= 1u << (first + lane);
+    }
+  }
+  return blocked;
+}
+
 std::optional<TriangleIndex::Hit> TriangleIndex::first_hit(const Eigen::Vector3d& a,
                                                            const Eigen::Vector3d& b) const {
   if (!impl_ || !all_finite(a) || !all_finite(b)) return std::nullopt;
@@ -380,6 +471,7 @@ std::optional<TriangleIndex::Nearest> TriangleIndex::nearest(const Eigen::Vector
   search.p = p;
   search.slack = tolerance(impl_->scale, p, p);
   search.best = limit;
+  search.margin = 1e-3 * search.slack;
 
   RTCPointQuery query;
   query.x = static_cast<float>(p.x());

@@ -2,7 +2,8 @@
 // answered by Embree 3 (Intel's ray-tracing kernels, Debian's libembree-dev).
 //
 //  - segment_blocked(a, b): does the closed segment a-b meet any triangle (occlusion: one
-//    rtcOccluded1 along the unnormalised direction b - a);
+//    rtcOccluded1 along the unnormalised direction b - a); segments_blocked(a, ends) asks
+//    it for several segments from one point at once, as ray packets;
 //  - first_hit(a, b): the first triangle along it, with its unit normal (rtcIntersect1);
 //  - nearest(p, limit): the distance to the nearest point of any triangle, when below
 //    `limit` (clearance; rtcPointQuery with an exact point-triangle distance callback).
@@ -37,6 +38,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "domains/camera/geometry/triangle_mesh.h"
 
@@ -70,6 +72,15 @@ class TriangleIndex {
 
   // True when the closed segment from `a` to `b` touches a triangle (see Precision).
   bool segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  // Segments from one point `a` to each of `ends` (at most kMaxFan): bit i of the result is
+  // set when the segment a-ends[i] is blocked, as segment_blocked(a, ends[i]) answers. Traced
+  // as Embree ray packets of up to 8 (rtcOccluded8): a candidate camera's sight lines to the
+  // character's body, or to its predicted look-at points, all leave one point toward one
+  // region a few metres away, so they share most of the tree's nodes, which a packet visits
+  // once for all its rays.
+  static constexpr std::size_t kMaxFan = 32;
+  std::uint32_t segments_blocked(const Eigen::Vector3d& a,
+                                 std::span<const Eigen::Vector3d> ends) const;
   // The first triangle the segment from `a` to `b` meets; t is clamped into [0, 1] (a
   // contact within tol before `a` is reported at t = 0).
   std::optional<Hit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;

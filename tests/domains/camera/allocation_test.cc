@@ -8,9 +8,11 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <memory>
 #include <new>
 
 #include "domains/camera/camera_problem.h"
+#include "domains/camera/constraints/bounded_violation.h"
 #include "domains/camera/constraints/occlusion.h"
 #include "domains/camera/profile_file.h"
 #include "domains/camera/scene_file.h"
@@ -101,6 +103,57 @@ TEST(CameraFramePath, WithAnticipationAndMoversAllocatesNothing) {
   for (std::size_t f = 1; f < scene.frame_count(); ++f) one_frame(f);
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_TRUE(std::isfinite(total));
+}
+
+TEST(CameraFramePath, OnALevelWithAnticipationAllocatesNothing) {
+  // A level's triangles (a floor, a wall, a roof: the body's and the predicted sight lines
+  // go to Embree as ray packets), a box and a cart crossing, the anticipating preset; each
+  // candidate scored in full and through the bounded counts the octree uses.
+  auto level = std::make_shared<Level>();
+  auto quad = [&](Eigen::Vector3f a, Eigen::Vector3f b, Eigen::Vector3f c, Eigen::Vector3f d) {
+    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
+    level->mesh.vertices.insert(level->mesh.vertices.end(), {a, b, c, d});
+    level->mesh.triangles.push_back({base, base + 1, base + 2});
+    level->mesh.triangles.push_back({base, base + 2, base + 3});
+  };
+  quad({-10, 0, -10}, {-10, 0, 12}, {10, 0, 12}, {10, 0, -10});
+  quad({-3, 0, 5}, {10, 0, 5}, {10, 3, 5}, {-3, 3, 5});
+  quad({-10, 3, 5}, {10, 3, 5}, {10, 3, 10}, {-10, 3, 10});
+  std::vector<SolidBox> solids = {{"pillar", {{-4, 0, 2}, {-3.5, 3, 2.5}}, {}}};
+  Scene scene("level", std::move(solids), {}, {},
+              Trajectory({{0, {0, 0, 0}, 0}, {4, {-6, 0, 9}, -40}}));
+  scene.set_level(level);
+  scene.set_movers({Mover("cart", {1, 2, 1}, {{0, {-6, 0, 4}}, {6, {6, 0, 4}}})});
+  const CameraProfile profile = preset_profile("anticipating");
+  CameraProblem cp(scene, profile);
+  ASSERT_TRUE(cp.ids().future_visible.has_value() && cp.ids().visible_fraction.has_value());
+  ASSERT_TRUE(cp.scene_at_time().packs_sight_lines());
+  const auto* body = dynamic_cast<const BoundedViolation*>(
+      &cp.problem().constraint(*cp.ids().visible_fraction));
+  const auto* future = dynamic_cast<const BoundedViolation*>(
+      &cp.problem().constraint(*cp.ids().future_visible));
+  ASSERT_TRUE(body != nullptr && future != nullptr);
+  std::vector<double> values(3);
+  double total = 0;
+  auto one_frame = [&](std::size_t frame) {
+    const CharacterState s = scene.character_at(scene.frame_time(frame));
+    cp.set_frame(s, cp.ideal_position(), 1.0 / scene.frame_rate());
+    const Eigen::Vector3d ideal = cp.ideal_position();
+    for (int k = 0; k < 8; ++k) {
+      values[0] = ideal.x() + ((k & 1) ? 0.8 : -0.8);
+      values[1] = ideal.y() + ((k & 2) ? 0.8 : -0.8);
+      values[2] = ideal.z() + ((k & 4) ? 0.8 : -0.8);
+      total += cp.problem().score(values).soft;
+      total += body->violation_until(values, 0.5, 1.0, 0.25);
+      total += future->violation_until(values, 0.5, 1.0, 0.0);
+    }
+  };
+  one_frame(0);
+  const long before = g_allocations.load();
+  for (std::size_t f = 1; f < scene.frame_count(); ++f) one_frame(f);
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_TRUE(std::isfinite(total));
+  EXPECT_GT(total, 0);
 }
 
 }  // namespace

@@ -1,12 +1,16 @@
 // SceneAtTime against brute force: random static boxes and random movers, queried at random
 // times; the expected answers come from the movers' keyframes interpolated here and a slab
-// test and point-box distance written here, over every box.
+// test and point-box distance written here, over every box. Fans of sight lines from one
+// point (lines_of_sight, static_blocked) likewise, and on a level against line_of_sight.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
+#include <string>
 
 #include "domains/camera/scene_at_time.h"
 
@@ -115,7 +119,7 @@ TEST_P(SceneAtTimeAgrees, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMove
   const int mover_count = GetParam();
   std::mt19937 rng(7 + mover_count);
   std::uniform_real_distribution<double> coord(-12, 12), when(-1, 11);
-  int blocked = 0, mover_first = 0, inside = 0;
+  int blocked = 0, mover_first = 0, inside = 0, fan_blocked = 0;
   for (int trial = 0; trial < 20; ++trial) {
     World world;
     const Scene scene = random_scene(rng, world, mover_count);
@@ -164,8 +168,30 @@ TEST_P(SceneAtTimeAgrees, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMove
         EXPECT_NEAR(surface->signed_distance, nearest, 1e-9);
         EXPECT_EQ(now.open_at(a), nearest > 0);
       }
+      // A fan of sight lines from one point (lines_of_sight, static_blocked): bit for bit
+      // the slab test over every box, and over the static ones only.
+      const Eigen::Vector3d a(coord(rng), coord(rng) * 0.3, coord(rng));
+      std::vector<Eigen::Vector3d> ends(1 + rng() % 12);
+      for (auto& b : ends) b = Eigen::Vector3d(coord(rng), coord(rng) * 0.3, coord(rng));
+      std::uint32_t want_clear = 0, want_static = 0;
+      for (std::size_t i = 0; i < ends.size(); ++i) {
+        double enter = 0;
+        bool any = false, any_static = false;
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+          if (!touches(a, ends[i], boxes[k], &enter)) continue;
+          any = true;
+          any_static = any_static || k < world.statics.size();
+        }
+        if (!any) want_clear |= 1u << i;
+        if (any_static) want_static |= 1u << i;
+      }
+      ASSERT_FALSE(now.packs_sight_lines());
+      ASSERT_EQ(now.lines_of_sight(a, ends), want_clear);
+      ASSERT_EQ(now.static_blocked(a, ends), want_static);
+      fan_blocked += std::popcount(want_static);
     }
   }
+  EXPECT_GT(fan_blocked, 500);
   // The random worlds exercised every branch.
   EXPECT_GT(blocked, 500);
   EXPECT_GT(mover_first, 50);
@@ -173,6 +199,102 @@ TEST_P(SceneAtTimeAgrees, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMove
 }
 
 INSTANTIATE_TEST_SUITE_P(FlatAndTree, SceneAtTimeAgrees, ::testing::Values(6, 40));
+
+// On a level, a fan of sight lines goes to the triangles as ray packets: every bit is what
+// line_of_sight answers for that line alone (itself checked against brute force above and in
+// triangle_index_test), and static_blocked is the static Scene's answer (no movers).
+TEST(SceneAtTime, FansOfSightLinesOnALevelAnswerAsLineOfSightOneByOne) {
+  std::mt19937 rng(31);
+  World world;
+  Scene scene = random_scene(rng, world, 20);
+  auto level = std::make_shared<Level>();
+  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5), when(-1, 11);
+  for (int i = 0; i < 300; ++i) {
+    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
+    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
+    for (int k = 0; k < 3; ++k) {
+      level->mesh.vertices.push_back(
+          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
+    }
+    level->mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  scene.set_level(level);
+  SceneAtTime now(scene);
+  ASSERT_TRUE(now.packs_sight_lines());
+  int clear = 0, blocked = 0, by_mover = 0;
+  std::uniform_real_distribution<double> body(-0.4, 0.4);
+  for (int trial = 0; trial < 400; ++trial) {
+    now.set_time(when(rng));
+    const Eigen::Vector3d a(coord(rng), 1 + coord(rng) * 0.2, coord(rng));
+    const Eigen::Vector3d target(coord(rng), 1, coord(rng));
+    std::vector<Eigen::Vector3d> ends(1 + rng() % TriangleIndex::kMaxFan);
+    for (auto& b : ends) {
+      // Most toward one body-sized region (a camera's sight lines), some anywhere.
+      b = rng() % 4 != 0 ? Eigen::Vector3d(target + Eigen::Vector3d(body(rng), 2 * body(rng),
+                                                                    body(rng)))
+                         : Eigen::Vector3d(coord(rng), coord(rng) * 0.3, coord(rng));
+    }
+    const std::uint32_t sight = now.lines_of_sight(a, ends);
+    const std::uint32_t fixed = now.static_blocked(a, ends);
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      const bool sees = now.line_of_sight(a, ends[i]);
+      ASSERT_EQ((sight >> i & 1u) != 0, sees) << "trial " << trial << " line " << i;
+      ASSERT_EQ((fixed >> i & 1u) != 0, !scene.line_of_sight(a, ends[i]))
+          << "trial " << trial << " line " << i;
+      (sees ? clear : blocked)++;
+      by_mover += !sees && (fixed >> i & 1u) == 0;
+    }
+    if (ends.size() < 32) {
+      ASSERT_EQ(sight >> ends.size(), 0u);
+    }
+  }
+  EXPECT_GT(clear, 1000);
+  EXPECT_GT(blocked, 1000);
+  EXPECT_GT(by_mover, 20);
+}
+
+// closer_than(p, r, limit) is clearance(p, limit) < r, on a level with a solid volume (a
+// slab below the ground), boxes and movers: every part that can decide it is exercised.
+class SlabBelow : public SolidVolume {
+ public:
+  bool solid_at(const Eigen::Vector3d& p) const override { return p.y() < -1; }
+  std::string describe() const override { return "slab"; }
+};
+
+TEST(SceneAtTime, CloserThanIsClearanceBelowTheRadius) {
+  std::mt19937 rng(41);
+  World world;
+  Scene scene = random_scene(rng, world, 20);
+  auto level = std::make_shared<Level>();
+  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5), when(-1, 11),
+      radius(0.05, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
+    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
+    for (int k = 0; k < 3; ++k) {
+      level->mesh.vertices.push_back(
+          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
+    }
+    level->mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  level->solid = std::make_shared<SlabBelow>();
+  scene.set_level(level);
+  SceneAtTime now(scene);
+  int closer = 0, clear = 0, solid = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    if (trial % 100 == 0) now.set_time(when(rng));
+    const Eigen::Vector3d p(coord(rng), coord(rng) * 0.3, coord(rng));
+    const double r = radius(rng);
+    const double limit = trial % 2 == 0 ? r : r + 1e-6;
+    const bool want = now.clearance(p, limit) < r;
+    ASSERT_EQ(now.closer_than(p, r, limit), want) << "trial " << trial;
+    (want ? closer : clear)++;
+    solid += p.y() < -1;
+  }
+  EXPECT_GT(closer, 2000);
+  EXPECT_GT(clear, 2000);
+  EXPECT_GT(solid, 1000);
+}
 
 TEST(SceneAtTime, AMoverStandsAtItsEndsBeforeTheFirstAndAfterTheLastKeyframe) {
   Scene scene("one", {}, {}, {}, Trajectory({{0, {0, 0, 0}, 0}, {10, {0, 0, 1}, 0}}));

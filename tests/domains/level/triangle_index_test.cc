@@ -5,11 +5,14 @@
 // a segment that passes within 1e-5 of the scene's scale of a triangle's boundary may go
 // either way; such cases are counted and must be rare, every other answer must agree
 // exactly. Also: queries from several threads, and queries allocate nothing (this program
-// counts operator new). The box and edge cases are in triangle_index_contact_test.cc.
+// counts operator new). The box and edge cases are in triangle_index_contact_test.cc, the
+// ray packets (segments_blocked) in triangle_index_packet_test.cc.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cstdlib>
 #include <new>
 #include <random>
@@ -262,6 +265,9 @@ TEST(TriangleIndex, QueriesDoNotAllocate) {
     if (const auto near = index.nearest(points[i], 0.2)) sink += near->distance;
     if (const auto near = index.nearest(points[i])) sink += near->distance;
     sink += index.segment_blocked(points[i], points[i]) ? 1 : 0;
+    const std::size_t fan = std::min<std::size_t>(TriangleIndex::kMaxFan, points.size() - i - 1);
+    sink += std::popcount(index.segments_blocked(
+        points[i], std::span<const Vector3d>(points.data() + i + 1, fan)));
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_GT(sink, 0);
