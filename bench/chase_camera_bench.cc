@@ -15,9 +15,12 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -172,8 +175,24 @@ void BM_ThesisScene(benchmark::State& state, const std::string& path) {
 int main(int argc, char** argv) {
   // Walks on real levels (experiments/scenes/levels/, made by `sightline level walk`): the
   // per-frame distribution over one whole walk (the level is loaded once, outside timing).
-  const std::string levels = std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/levels";
-  if (std::filesystem::is_directory(levels)) {
+  // SIGHTLINE_BENCH_WALKS adds folders of walks (':'-separated): a user's own levels, or
+  // walks on maps the project does not ship (docs/EXPERIMENTS.md, "Held-out maps").
+  std::vector<std::string> level_folders{std::string(SIGHTLINE_SOURCE_DIR) +
+                                         "/experiments/scenes/levels"};
+  if (const char* extra = std::getenv("SIGHTLINE_BENCH_WALKS")) {
+    std::istringstream folders(extra);
+    for (std::string folder; std::getline(folders, folder, ':');) {
+      if (!folder.empty()) level_folders.push_back(folder);
+    }
+  }
+  for (const std::string& levels : level_folders) {
+    if (!std::filesystem::is_directory(levels)) {
+      if (levels != level_folders.front()) {
+        std::cerr << "SIGHTLINE_BENCH_WALKS: '" << levels << "' is not a folder\n";
+        return 2;
+      }
+      continue;
+    }
     for (const std::string& path : sightline::experiments::scene_files(levels)) {
       auto scene = std::make_shared<const Scene>(sightline::camera::read_scene_file(path));
       benchmark::RegisterBenchmark(
