@@ -107,6 +107,10 @@ camera::Trajectory walk(const std::vector<Vector3d>& points, double speed) {
   return camera::Trajectory(std::move(keys));
 }
 
+std::string family_scene_name(const char* family, std::uint64_t seed) {
+  return std::string(family) + "-seed-" + std::to_string(seed);
+}
+
 camera::Scene finish(std::string name, std::string description, std::vector<camera::SolidBox> boxes,
                      const std::vector<Vector3d>& path, double speed,
                      std::vector<camera::Mover> movers) {

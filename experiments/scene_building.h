@@ -56,6 +56,9 @@ void add_ceiling(const std::vector<Rect>& open, double thickness, double y,
 // 225 deg/s (0.4 s for a quarter turn, at least 0.4 s).
 camera::Trajectory walk(const std::vector<Eigen::Vector3d>& points, double speed);
 
+// A generated scene's name: "<family>-seed-<seed>".
+std::string family_scene_name(const char* family, std::uint64_t seed);
+
 // The scene, checked: the body never overlaps a solid box at any frame (the scene reader's
 // rule), no mover comes within 0.3 m of the body (std::logic_error otherwise: a generator
 // bug); the camera starts 4 m behind and 1 m above the look-at point, drawn in toward it
