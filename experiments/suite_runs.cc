@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "domains/camera/profile_text.h"
 #include "experiments/stable_hash.h"
 
 // How a suite becomes runs: every scene x solver x profile x seed (and problem x solver x
@@ -32,6 +33,21 @@ std::string file_hash(const std::string& path) {
   return StableHash().add(text.str()).short_hex();
 }
 
+// What a camera run's profile says, as 16 hex digits of its canonical text
+// (profile_text.h): the profile entry's source ("inline", "file PATH", "preset NAME",
+// "scene") alone would let an edited inline mapping, profile file, preset or a scene's
+// profile file reuse stale results. A "scene" entry takes the subject scene's own profile,
+// which may come from a file or preset the scene file's hash does not cover. The subject's
+// scene is loaded whenever its runs are made (also in a run-one child, suite.h).
+std::string profile_content(const Suite& suite, std::size_t subject, std::size_t profile) {
+  const SuiteProfile& entry = suite.profiles[profile];
+  const camera::Scene* scene = suite.scenes[subject].scene.get();
+  if (!entry.profile && scene == nullptr) return "unloaded";  // never matches a real id
+  return StableHash()
+      .add(camera::profile_text(entry.profile ? *entry.profile : scene->profile()))
+      .hex();
+}
+
 // The run's definition and id. `subject_hash` is the hash of its scene or problem file.
 SuiteRun combination(const Suite& suite, SuiteRun::Kind kind, std::size_t subject,
                      std::size_t solver, std::size_t profile, std::uint64_t seed,
@@ -47,6 +63,7 @@ SuiteRun combination(const Suite& suite, SuiteRun::Kind kind, std::size_t subjec
     run.definition = "camera;scene=" + suite.scenes[subject].label + "#" + subject_hash + ";" +
                      suite.camera_solvers[solver].definition +
                      ";profile=" + suite.profiles[profile].definition +
+                     ",content=" + profile_content(suite, subject, profile) +
                      ";seed=" + std::to_string(seed);
     limits = &suite.camera_solvers[solver].limits;
     run.id = file_safe(suite.scenes[subject].label + "__" + suite.camera_solvers[solver].label +

@@ -87,6 +87,52 @@ TEST(SuiteRunner, AHalfWrittenOrStrayResultIsRedone) {
   EXPECT_TRUE(read_run_file(result5.string(), r));
 }
 
+TEST(SuiteRunner, EditingAProfileFileRedoesExactlyTheRunsWithThatProfile) {
+  ScratchDir dir("runner-profile-edit");
+  dir.write("profiles/near.yaml", "name: near\nbase: close-follow\ndistance: {desired: 2.5}\n");
+  dir.write("profiles/far.yaml", "name: far\ndistance: {desired: 5}\n");
+  const std::string suite_path = dir.write("suite.yaml", R"(name: profile-edit
+camera:
+  scenes: [scenes/wall.yaml]
+  solvers: [occlusion-octree]
+  profiles: [profiles/near.yaml, profiles/far.yaml]
+  seeds: [1, 2]
+)");
+  const std::vector<SuiteRun> before = expand_runs(read_suite_file(suite_path));
+  ASSERT_EQ(before.size(), 4u);
+  const SuiteOutcome first = run_suite(read_suite_file(suite_path), options_for(dir.path("out")));
+  EXPECT_EQ(first.ran, 4u);
+  EXPECT_EQ(first.failed, 0u);
+
+  // The same profile written differently (keys reordered, a comment): nothing is redone.
+  dir.write("profiles/far.yaml", "# farther back\ndistance: {desired: 5.0}\nname: far\n");
+  const SuiteOutcome same = run_suite(read_suite_file(suite_path), options_for(dir.path("out")));
+  EXPECT_EQ(same.ran, 0u);
+  EXPECT_EQ(same.reused, 4u);
+
+  // One number of far.yaml edited: its two seeds run again with the new profile, near's are
+  // kept; the file name, and so the profile's source, did not change.
+  dir.write("profiles/far.yaml", "name: far\ndistance: {desired: 5.5}\n");
+  const Suite edited = read_suite_file(suite_path);
+  const std::vector<SuiteRun> after = expand_runs(edited);
+  ASSERT_EQ(after.size(), 4u);
+  const SuiteOutcome second = run_suite(edited, options_for(dir.path("out")));
+  EXPECT_EQ(second.ran, 2u);
+  EXPECT_EQ(second.reused, 2u);
+  EXPECT_EQ(second.failed, 0u);
+  ASSERT_EQ(second.results.size(), 4u);
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    const bool far = edited.profiles[after[i].profile].label == "far";
+    EXPECT_EQ(after[i].id != before[i].id, far) << after[i].id;
+    // Each result names the run's current definition: none is the stale one.
+    RunResult r;
+    ASSERT_TRUE(read_run_file(dir.path("out/runs/" + after[i].id + ".result"), r));
+    EXPECT_EQ(r.definition, after[i].definition);
+  }
+  const std::string csv = read_text(dir.path("out/results.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << csv;
+}
+
 TEST(SuiteRunner, ToyRunsReportCostFeasibilityAndTheIndependentCheck) {
   ScratchDir dir("runner-toy");
   const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: toy
