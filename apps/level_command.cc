@@ -81,7 +81,7 @@ void walk_level(const LevelWalkArgs& args) {
   const std::vector<Eigen::Vector3d> spawns =
       experiments::quake3_spawn_points(spec, level.transform);
   const experiments::LevelWalks result =
-      experiments::generate_walks(level.mesh, args.options, spawns);
+      experiments::generate_walks(level.mesh, args.options, spawns, level.solid.get());
   const experiments::NavigationMeshStats& nav = result.navigation;
   std::cout << "Navigation mesh: " << nav.polygons << " polygons, " << nav.region_polygons
             << " in the connected region walked (" << fixed(nav.region_area, 1) << " of "

@@ -27,6 +27,10 @@ constexpr int kGoalCandidates = 8;
 // Goals whose route cannot be walked (probe and mesh disagree) are given up after this many.
 constexpr int kMaxFailedGoals = 30;
 constexpr double kMinRouteLength = 1.0;  // metres
+// The person's body, looked at for solid matter: knees and chest above the feet, every
+// kSolidSample metres along a leg (oa_thor's thinnest unseen slabs are 0.25 m thick).
+constexpr double kSolidHeights[] = {0.5, 1.3};
+constexpr double kSolidSample = 0.1;
 
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 double uniform(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * unit(rng); }
@@ -52,8 +56,9 @@ struct Straight {
 
 class WalkMaker {
  public:
-  WalkMaker(const NavigationMesh& nav, const FloorProbe& probe, const WalkOptions& options)
-      : nav_(nav), probe_(probe), options_(options) {}
+  WalkMaker(const NavigationMesh& nav, const FloorProbe& probe, const WalkOptions& options,
+            const camera::SolidVolume* solid)
+      : nav_(nav), probe_(probe), options_(options), solid_(solid) {}
 
   // Feet on the floor under `p`, looked for from above the highest a step could take them.
   std::optional<Eigen::Vector3d> feet_under(const Eigen::Vector3d& p, double previous_floor) const {
@@ -67,6 +72,17 @@ class WalkMaker {
   LevelWalk walk(std::mt19937_64& rng) const;
 
  private:
+  // True when the person would be inside the level's solid volume (if it has one) on the
+  // way from `from` along `plan`.
+  bool enters_solid(const Eigen::Vector3d& from, const std::vector<Straight>& plan) const {
+    if (solid_ == nullptr) return false;
+    std::vector<Eigen::Vector3d> feet = {from};
+    for (const Straight& straight : plan) {
+      for (const Placed& p : straight.keyframes) feet.push_back(p.feet);
+    }
+    return first_in_solid(feet, *solid_).has_value();
+  }
+
   std::optional<std::vector<Straight>> plan_route(
       const Eigen::Vector3d& from, const std::vector<NavigationMesh::RoutePoint>& route) const;
   std::optional<std::vector<Placed>> straight(const Eigen::Vector3d& from,
@@ -76,6 +92,7 @@ class WalkMaker {
   const NavigationMesh& nav_;
   const FloorProbe& probe_;
   const WalkOptions& options_;
+  const camera::SolidVolume* solid_;  // null: the level has no solid volume
 };
 
 // The keyframes of one straight stretch of a route, from the feet `from` (at route[a]) to
@@ -187,6 +204,7 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
     const Eigen::Vector3d p = nav_.random_point(rng);
     start = feet_under(p, p.y());
     if (start && !probe_.has_headroom(*start)) start.reset();
+    if (start && solid_ && first_in_solid({*start}, *solid_)) start.reset();
   }
   if (!start) {
     throw WalkError(
@@ -210,7 +228,8 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
     std::optional<std::vector<Straight>> plan;
     for (const auto& goal : goals) {
       plan = plan_route(here, goal.second);
-      if (plan && !plan->empty()) break;
+      // A route through matter the triangles miss is refused like one that leaves the floor.
+      if (plan && !plan->empty() && !enters_solid(here, *plan)) break;
       plan.reset();
       ++failures;
     }
@@ -283,7 +302,8 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
       feet = p;
     } else {
       feet = feet_under(p, p.y());
-      if (feet && !(probe_.has_headroom(*feet) && probe_.body_clear(before.position, *feet))) {
+      if (feet && !(probe_.has_headroom(*feet) && probe_.body_clear(before.position, *feet) &&
+                    !(solid_ && first_in_solid({before.position, *feet}, *solid_)))) {
         feet.reset();
       }
     }
@@ -347,14 +367,15 @@ std::string WalkOptions::validate() const {
 }
 
 LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options,
-                          const std::vector<Eigen::Vector3d>& anchors) {
+                          const std::vector<Eigen::Vector3d>& anchors,
+                          const camera::SolidVolume* solid) {
   if (const std::string bad = options.validate(); !bad.empty()) throw std::invalid_argument(bad);
   const auto start = std::chrono::steady_clock::now();
   LevelWalks out;
   const NavigationMesh nav(mesh, options, anchors);
   out.navigation = nav.stats();
   const FloorProbe probe(mesh, options.agent_height);
-  const WalkMaker maker(nav, probe, options);
+  const WalkMaker maker(nav, probe, options, solid);
   for (int w = 0; w < options.walks; ++w) {
     // Each walk its own stream: walk k is the same whatever the number of walks.
     std::seed_seq seq{static_cast<std::uint32_t>(options.seed),
@@ -365,6 +386,29 @@ LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& o
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::optional<std::size_t> first_in_solid(const std::vector<Eigen::Vector3d>& feet,
+                                          const camera::SolidVolume& solid) {
+  const auto body_in_solid = [&](const Eigen::Vector3d& at) {
+    for (double h : kSolidHeights) {
+      if (solid.solid_at(at + h * Eigen::Vector3d::UnitY())) return true;
+    }
+    return false;
+  };
+  if (feet.size() == 1) {
+    if (body_in_solid(feet[0])) return 0;
+    return std::nullopt;
+  }
+  for (std::size_t i = 0; i + 1 < feet.size(); ++i) {
+    const Eigen::Vector3d& a = feet[i];
+    const Eigen::Vector3d& b = feet[i + 1];
+    const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / kSolidSample)));
+    for (int k = 0; k <= n; ++k) {
+      if (body_in_solid(a + (b - a) * (static_cast<double>(k) / n))) return i;
+    }
+  }
+  return std::nullopt;
 }
 
 std::string walk_scene_yaml(const std::string& name, const std::string& description,

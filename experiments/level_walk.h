@@ -9,8 +9,12 @@
 // Recast's voxel picture of the level, so every keyframe is put on the level's own floor
 // (a ray down into its triangles, floor_probe.h), with the person's headroom, and keyframes
 // are added where the floor changes height (stairs, ramps) until no leg passes through a
-// surface at knee, waist, chest or head height. The same seed gives the same walks. Scene
-// files are written by walk_scene_yaml().
+// surface at knee, waist, chest or head height. A level's triangles can miss solid matter
+// (a Quake III brush drawn with a non-solid surface, e.g. oa_thor's pipe-faced slabs): when
+// the level knows its solid volume, a route whose person would be inside it (first_in_solid)
+// is refused like one that leaves the floor, and another goal is walked to. The same seed
+// gives the same walks (and, where no route meets solid matter, the same walks as without
+// the check). Scene files are written by walk_scene_yaml().
 #pragma once
 
 #include <cstdint>
@@ -19,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "domains/camera/geometry/solid_volume.h"
 #include "domains/camera/geometry/triangle_mesh.h"
 #include "domains/camera/level/level_transform.h"
 #include "domains/camera/trajectory.h"
@@ -84,9 +89,18 @@ class WalkError : public std::runtime_error {
 // most of `anchors` (where people are known to stand, e.g. quake3_spawn_points()), or the
 // largest one when there are none. Throws WalkError when the level has no walkable region
 // big enough for a walk (the message says what was found), std::invalid_argument when
-// options.validate() fails.
+// options.validate() fails. With `solid` (the level's solid volume, Level::solid; null when
+// it has none) no walk puts the person inside it (first_in_solid).
 LevelWalks generate_walks(const camera::TriangleMesh& mesh, const WalkOptions& options,
-                          const std::vector<Eigen::Vector3d>& anchors = {});
+                          const std::vector<Eigen::Vector3d>& anchors = {},
+                          const camera::SolidVolume* solid = nullptr);
+
+// The person walking through the feet positions `feet` (metres, y up), looked at every
+// 0.1 m along each straight leg at knee (0.5 m) and chest (1.3 m) height above the feet:
+// the first leg (i: from feet[i] to feet[i + 1]; 0 for a single position) where a sample is
+// solid, or nullopt when none is.
+std::optional<std::size_t> first_in_solid(const std::vector<Eigen::Vector3d>& feet,
+                                          const camera::SolidVolume& solid);
 
 // A scene file (FORMATS.md) for one walk: `name`, a description, the `level:` block naming
 // `level_file` (as it should appear in the file), `map` (omitted when empty), `scale` and
