@@ -77,7 +77,7 @@ void ChaseCamera::reset(const Eigen::Vector3d& position) {
 
 bool ChaseCamera::clear(const Eigen::Vector3d& p) const {
   const double r = problem_.profile().clearance_radius;
-  return problem_.scene_at_time().clearance(p, r + 1e-6) >= r;
+  return !problem_.scene_at_time().closer_than(p, r, r + 1e-6);  // clearance >= r
 }
 
 bool ChaseCamera::sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const {

@@ -43,6 +43,12 @@ struct Quintic {
   }
 };
 
+// Room for the camera's sphere of radius r at p (clearance >= r), by the query that answers
+// just that.
+bool has_room(const SceneAtTime& geometry, const Eigen::Vector3d& p, double r) {
+  return !geometry.closer_than(p, r, r + 1e-6);
+}
+
 // A first frame that grazes a wall (inside clearance by at most kMaxSlide) slides along it:
 // pushed out along the wall's normal (the clearance's gradient, by central differences),
 // its velocity into the wall removed. A few millimetres of push cost far less jerk than any
@@ -82,6 +88,66 @@ HorizonPlanner::HorizonPlanner(const CameraProblem& problem,
       plan_seconds_(plan_seconds),
       max_jerk_(max_jerk) {}
 
+std::optional<Eigen::Vector3d> HorizonPlanner::follow_trail(const State& now,
+                                                            const Eigen::Vector3d& look,
+                                                            const Eigen::Vector3d& target_velocity,
+                                                            Eigen::Vector3d& trail_velocity) {
+  // The trail: the character's look-at point every kTrailSpacing metres.
+  {
+    const int newest = (trail_next_ + kTrailPoints - 1) % kTrailPoints;
+    if (trail_size_ == 0 ||
+        (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
+      trail_[static_cast<std::size_t>(trail_next_)] = look;
+      trail_next_ = (trail_next_ + 1) % kTrailPoints;
+      trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
+    }
+  }
+  const SceneAtTime& geometry_now = problem_->scene_at_time();
+  // Only when the straight way to the ideal position (the profile's shot, where the
+  // camera should end up; the solver's target is searched near the camera and may be on
+  // the camera's side of a wall) is blocked: the newest trail point the camera sees
+  // directly, with room for it there.
+  const Eigen::Vector3d ideal = problem_->ideal_position();
+  const double radius = problem_->profile().clearance_radius;
+  // Left behind: farther from the ideal shot than the solver searches, the straight way
+  // there blocked, the shot itself open and in her sight (so her path leads there: a shot
+  // beyond the wall she backed up to is not reached along it), and (to start following)
+  // no nearer than last frame; then it follows until it sees its way to the shot or is
+  // near it.
+  const double off = (now.position - ideal).norm();
+  const bool cut_off = off > problem_->profile().search_half_size &&
+                       has_room(geometry_now, ideal, radius) &&
+                       !geometry_now.line_of_sight(now.position, ideal) &&
+                       geometry_now.line_of_sight(look, ideal);
+  following_trail_ = cut_off && (following_trail_ || off >= last_off_ideal_);
+  last_off_ideal_ = off;
+  if (!following_trail_) return std::nullopt;
+  for (int k = 1; k <= trail_size_; ++k) {
+    const Eigen::Vector3d& p =
+        trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
+    // At the shot's height above her path where there is room (no ceiling in the way),
+    // else at her look-at height, where her body was.
+    Eigen::Vector3d raised = p;
+    raised.y() += ideal.y() - look.y();
+    const bool high = has_room(geometry_now, raised, radius) &&
+                      geometry_now.line_of_sight(raised, p) &&
+                      geometry_now.line_of_sight(now.position, raised);
+    if (high || (geometry_now.line_of_sight(now.position, p) &&
+                 has_room(geometry_now, p, radius))) {
+      const Eigen::Vector3d waypoint = high ? raised : p;
+      // Moving on along her path at the target's speed: the way she went from there.
+      const Eigen::Vector3d& next = trail_[static_cast<std::size_t>(
+          (trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
+      const Eigen::Vector3d along = next - p;
+      trail_velocity = along.norm() > 1e-9
+                           ? Eigen::Vector3d(along.normalized() * target_velocity.norm())
+                           : Eigen::Vector3d::Zero();
+      return waypoint;
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
                                                           const Eigen::Vector3d& target,
                                                           const Eigen::Vector3d& target_velocity,
@@ -95,62 +161,11 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   toward = reach_in > 1e-9 ? Eigen::Vector3d(toward / reach_in) : Eigen::Vector3d::UnitX();
   const Eigen::Vector3d side(toward.z(), 0, -toward.x());
 
-  // The trail: the character's look-at point every kTrailSpacing metres.
-  {
-    const int newest = (trail_next_ + kTrailPoints - 1) % kTrailPoints;
-    if (trail_size_ == 0 ||
-        (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
-      trail_[static_cast<std::size_t>(trail_next_)] = look;
-      trail_next_ = (trail_next_ + 1) % kTrailPoints;
-      trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
-    }
-  }
-  const SceneAtTime& scene_now = problem_->scene_at_time();
-  // Only when the straight way to the ideal position (the profile's shot, where the
-  // camera should end up; the solver's target is searched near the camera and may be on
-  // the camera's side of a wall) is blocked: the newest trail point the camera sees
-  // directly, with room for it there.
-  std::optional<Eigen::Vector3d> waypoint;
+  // The trail's waypoint, when the camera is left behind (follow_trail).
   Eigen::Vector3d trail_velocity = Eigen::Vector3d::Zero();
+  const std::optional<Eigen::Vector3d> waypoint =
+      follow_trail(now, look, target_velocity, trail_velocity);
   const Eigen::Vector3d ideal = problem_->ideal_position();
-  const double clearance_radius = problem_->profile().clearance_radius;
-  // Left behind: farther from the ideal shot than the solver searches, the straight way
-  // there blocked, the shot itself open and in her sight (so her path leads there: a shot
-  // beyond the wall she backed up to is not reached along it), and (to start following)
-  // no nearer than last frame; then it follows until it sees its way to the shot or is
-  // near it.
-  const double off = (now.position - ideal).norm();
-  const bool cut_off = off > problem_->profile().search_half_size &&
-                       scene_now.clearance(ideal, clearance_radius + 1e-6) >= clearance_radius &&
-                       !scene_now.line_of_sight(now.position, ideal) &&
-                       scene_now.line_of_sight(look, ideal);
-  following_trail_ = cut_off && (following_trail_ || off >= last_off_ideal_);
-  last_off_ideal_ = off;
-  if (following_trail_) {
-    for (int k = 1; k <= trail_size_; ++k) {
-      const Eigen::Vector3d& p =
-          trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
-      // At the shot's height above her path where there is room (no ceiling in the way),
-      // else at her look-at height, where her body was.
-      Eigen::Vector3d raised = p;
-      raised.y() += ideal.y() - look.y();
-      const bool high = scene_now.clearance(raised, clearance_radius + 1e-6) >= clearance_radius &&
-                        scene_now.line_of_sight(raised, p) &&
-                        scene_now.line_of_sight(now.position, raised);
-      if (high || (scene_now.line_of_sight(now.position, p) &&
-                   scene_now.clearance(p, clearance_radius + 1e-6) >= clearance_radius)) {
-        waypoint = high ? raised : p;
-        // Moving on along her path at the target's speed: the way she went from there.
-        const Eigen::Vector3d& next = trail_[static_cast<std::size_t>(
-            (trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
-        const Eigen::Vector3d along = next - p;
-        trail_velocity = along.norm() > 1e-9
-                             ? Eigen::Vector3d(along.normalized() * target_velocity.norm())
-                             : Eigen::Vector3d::Zero();
-        break;
-      }
-    }
-  }
 
   // Offsets from the target (index kStop: the smooth stop, goal computed below; kTrail:
   // the trail's waypoint).
@@ -181,7 +196,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
   };
   const csp::Problem& problem = problem_->problem();
-  const SceneAtTime& geometry_now = scene_now;
+  const SceneAtTime& geometry_now = problem_->scene_at_time();
   const MotionPrediction& prediction = problem_->prediction();
   const double radius = problem_->profile().clearance_radius;
   const double sight_weight =
@@ -302,7 +317,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     } else {
       for (int j = 0; j < kNear && cost < best_cost; ++j) {
         const auto v = static_cast<std::size_t>(j);
-        if (!near_path[v] || geometry_now.closer_than(near_x[v], radius, radius + 1e-6)) {
+        if (!near_path[v] || !has_room(geometry_now, near_x[v], radius)) {
           cost += kBlockedPrice;
         }
         if (near_has_soon[v] && !near_soon[v]) cost += kBlockedPrice;
@@ -311,7 +326,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
         const auto v = static_cast<std::size_t>(k);
         const MotionPrediction::Sample& s = prediction.sample(k);
         double hidden = sees[v] ? 0.0 : 1.0;
-        if (!path_clear[v] || prediction.geometry(k).closer_than(xs[v], radius, radius + 1e-6)) {
+        if (!path_clear[v] || !has_room(prediction.geometry(k), xs[v], radius)) {
           hidden += 1;
           cost += kBlockedPrice * s.weight;  // geometry is no guess: priced like the near frames
         }
@@ -355,14 +370,14 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     // predicted look-at point from where it is then (clear of geometry)? The controller's
     // cuts.cut_ahead asks (regains_sight()).
     regains_sight_ = prediction.size() == 0;
-    const MotionPrediction::Sample* first = prediction.size() > 0 ? &prediction.sample(0) : nullptr;
     for (int i = 0; i < kCandidates && !regains_sight_; ++i) {
       const auto u = static_cast<std::size_t>(i);
       if (!std::isfinite(cheap[u])) continue;
-      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
-      const Eigen::Vector3d x = q.position(std::max(first->ahead, dt));
+      const MotionPrediction::Sample& first = prediction.sample(0);
       const SceneAtTime& g = prediction.geometry(0);
-      regains_sight_ = g.clearance(x, radius + 1e-6) >= radius && g.line_of_sight(x, first->look_at);
+      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+      const Eigen::Vector3d x = q.position(std::max(first.ahead, dt));
+      regains_sight_ = has_room(g, x, radius) && g.line_of_sight(x, first.look_at);
     }
   }
   if (best) {

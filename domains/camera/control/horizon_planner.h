@@ -117,6 +117,13 @@ class HorizonPlanner {
   bool regains_sight() const { return regains_sight_; }
 
  private:
+  // Records her look-at point on the trail and, when the camera is left behind (see the
+  // header comment), returns the trail's waypoint and sets `trail_velocity` (on along her
+  // path); nullopt otherwise.
+  std::optional<Eigen::Vector3d> follow_trail(const State& now, const Eigen::Vector3d& look,
+                                              const Eigen::Vector3d& target_velocity,
+                                              Eigen::Vector3d& trail_velocity);
+
   const CameraProblem* problem_;
   std::vector<csp::ConstraintId> framing_ids_;
   double max_speed_, max_acceleration_, plan_seconds_, max_jerk_;
