@@ -345,6 +345,22 @@ void extended_segment_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& 
   ray.flags = 0;
 }
 
+// The same ray as lane `lane` of a packet (Embree's packets are structures of arrays).
+void put_in_lane(const RTCRay& ray, int lane, RTCRay8& rays) {
+  rays.org_x[lane] = ray.org_x;
+  rays.org_y[lane] = ray.org_y;
+  rays.org_z[lane] = ray.org_z;
+  rays.tnear[lane] = ray.tnear;
+  rays.dir_x[lane] = ray.dir_x;
+  rays.dir_y[lane] = ray.dir_y;
+  rays.dir_z[lane] = ray.dir_z;
+  rays.time[lane] = ray.time;
+  rays.tfar[lane] = ray.tfar;
+  rays.mask[lane] = ray.mask;
+  rays.id[lane] = ray.id;
+  rays.flags[lane] = ray.flags;
+}
+
 }  // namespace
 
 bool TriangleIndex::segment_blocked(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
@@ -392,18 +408,7 @@ std::uint32_t TriangleIndex::segments_blocked(const Eigen::Vector3d& a,
       const double e = tol / length;
       RTCRay& ray = single[lane];
       extended_segment_ray(a - e * d, d, e, ray);
-      rays.org_x[lane] = ray.org_x;
-      rays.org_y[lane] = ray.org_y;
-      rays.org_z[lane] = ray.org_z;
-      rays.tnear[lane] = ray.tnear;
-      rays.dir_x[lane] = ray.dir_x;
-      rays.dir_y[lane] = ray.dir_y;
-      rays.dir_z[lane] = ray.dir_z;
-      rays.time[lane] = ray.time;
-      rays.tfar[lane] = ray.tfar;
-      rays.mask[lane] = ray.mask;
-      rays.id[lane] = ray.id;
-      rays.flags[lane] = ray.flags;
+      put_in_lane(ray, lane, rays);
       valid[lane] = -1;
       ++active;
     }
