@@ -113,6 +113,23 @@ Scene random_scene(std::mt19937& rng, World& world, int mover_count) {
 }
 
 // A few movers (one group) and many (several groups, most skipped by their bounds).
+// A level of 300 random triangles up to 3 m across around the scene's boxes (x, z in
+// [-10, 10], y in [-3, 3]).
+std::shared_ptr<Level> random_soup_level(std::mt19937& rng) {
+  auto level = std::make_shared<Level>();
+  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5);
+  for (int i = 0; i < 300; ++i) {
+    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
+    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
+    for (int k = 0; k < 3; ++k) {
+      level->mesh.vertices.push_back(
+          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
+    }
+    level->mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  return level;
+}
+
 class SceneAtTimeAgrees : public ::testing::TestWithParam<int> {};
 
 TEST_P(SceneAtTimeAgrees, QueriesAgreeWithBruteForceOverStaticBoxesAndPlacedMovers) {
@@ -207,17 +224,8 @@ TEST(SceneAtTime, FansOfSightLinesOnALevelAnswerAsLineOfSightOneByOne) {
   std::mt19937 rng(31);
   World world;
   Scene scene = random_scene(rng, world, 20);
-  auto level = std::make_shared<Level>();
-  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5), when(-1, 11);
-  for (int i = 0; i < 300; ++i) {
-    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
-    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
-    for (int k = 0; k < 3; ++k) {
-      level->mesh.vertices.push_back(
-          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
-    }
-    level->mesh.triangles.push_back({base, base + 1, base + 2});
-  }
+  auto level = random_soup_level(rng);
+  std::uniform_real_distribution<double> coord(-10, 10), when(-1, 11);
   scene.set_level(level);
   SceneAtTime now(scene);
   ASSERT_TRUE(now.packs_sight_lines());
@@ -265,18 +273,8 @@ TEST(SceneAtTime, CloserThanIsClearanceBelowTheRadius) {
   std::mt19937 rng(41);
   World world;
   Scene scene = random_scene(rng, world, 20);
-  auto level = std::make_shared<Level>();
-  std::uniform_real_distribution<double> coord(-10, 10), spread(-1.5, 1.5), when(-1, 11),
-      radius(0.05, 1.0);
-  for (int i = 0; i < 300; ++i) {
-    const Eigen::Vector3d c(coord(rng), coord(rng) * 0.3, coord(rng));
-    const auto base = static_cast<std::uint32_t>(level->mesh.vertices.size());
-    for (int k = 0; k < 3; ++k) {
-      level->mesh.vertices.push_back(
-          (c + Eigen::Vector3d(spread(rng), spread(rng), spread(rng))).cast<float>());
-    }
-    level->mesh.triangles.push_back({base, base + 1, base + 2});
-  }
+  auto level = random_soup_level(rng);
+  std::uniform_real_distribution<double> coord(-10, 10), when(-1, 11), radius(0.05, 1.0);
   level->solid = std::make_shared<SlabBelow>();
   scene.set_level(level);
   SceneAtTime now(scene);

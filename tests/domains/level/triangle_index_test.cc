@@ -130,16 +130,8 @@ void compare_with_brute_force(const TriangleMesh& mesh, const Aabb& region, int 
   const double tol = 1e-5 * scale;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0, 1);
-  auto somewhere = [&] {
-    return Vector3d(region.min + region.size().cwiseProduct(
-                                     Vector3d(unit(rng), unit(rng), unit(rng))));
-  };
-  auto on_triangle = [&] {
-    const brute::Triangle& t = tris[rng() % tris.size()];
-    double u = unit(rng), v = unit(rng);
-    if (u + v > 1) u = 1 - u, v = 1 - v;
-    return Vector3d(t.v[0] + u * (t.v[1] - t.v[0]) + v * (t.v[2] - t.v[0]));
-  };
+  auto somewhere = [&] { return test_meshes::random_point_in(region, rng); };
+  auto on_triangle = [&] { return test_meshes::random_point_on(mesh, rng); };
   for (int i = 0; i < segments; ++i) {
     const Vector3d a = somewhere();
     Vector3d b = i % 2 == 0 ? on_triangle() : somewhere();

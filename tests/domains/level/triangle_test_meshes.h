@@ -1,5 +1,6 @@
 // Meshes for the TriangleIndex tests: random triangle soups (with degenerate triangles), a
-// closed box of 12 triangles, and a 100k-triangle procedural level (terrain and walls).
+// closed box of 12 triangles, and a 100k-triangle procedural level (terrain and walls); and
+// random query points in a region or on a mesh's triangles.
 #pragma once
 
 #include <Eigen/Core>
@@ -89,6 +90,22 @@ inline TriangleMesh procedural_level() {
 inline double scale_of(const TriangleMesh& mesh) {
   const Aabb b = mesh.bounds();
   return std::max({1.0, b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
+}
+
+// A uniform random point of `region`.
+inline Vector3d random_point_in(const Aabb& region, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  return Vector3d(region.min + region.size().cwiseProduct(Vector3d(unit(rng), unit(rng), unit(rng))));
+}
+
+// A uniform random point of a random triangle of `mesh` (exactly on it up to double rounding).
+inline Vector3d random_point_on(const TriangleMesh& mesh, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const auto i = static_cast<std::uint32_t>(rng() % mesh.size());
+  const Vector3d a = mesh.vertex(i, 0), b = mesh.vertex(i, 1), c = mesh.vertex(i, 2);
+  double u = unit(rng), v = unit(rng);
+  if (u + v > 1) u = 1 - u, v = 1 - v;
+  return Vector3d(a + u * (b - a) + v * (c - a));
 }
 
 }  // namespace sightline::camera::test_meshes
