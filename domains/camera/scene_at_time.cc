@@ -101,12 +101,7 @@ std::uint32_t SceneAtTime::static_blocked(const Eigen::Vector3d& a,
   std::uint32_t blocked = scene_->triangle_index().segments_blocked(a, ends);
   if (scene_->solids().empty()) return blocked;
   for (std::size_t i = 0; i < ends.size(); ++i) {
-    if (blocked & (1u << i)) continue;
-    const Eigen::Vector3d& b = ends[i];
-    const bool boxes_block = nearby_ && nearby_->covers(a, b)
-                                 ? nearby_->segment_blocked(a, b)
-                                 : scene_->solid_tree().segment_blocked(a, b);
-    if (boxes_block) blocked |= 1u << i;
+    if (!(blocked & (1u << i)) && boxes_block(a, ends[i])) blocked |= 1u << i;
   }
   return blocked;
 }

@@ -64,10 +64,8 @@ class SceneAtTime {
 
   // --- Scene's queries, with the movers at time() (see scene.h for their meaning) ---
   bool line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-    const bool boxes_block = nearby_ && nearby_->covers(a, b)
-                                 ? nearby_->segment_blocked(a, b)
-                                 : scene_->solid_tree().segment_blocked(a, b);
-    return !boxes_block && !scene_->triangle_index().segment_blocked(a, b) && !mover_blocks(a, b);
+    return !boxes_block(a, b) && !scene_->triangle_index().segment_blocked(a, b) &&
+           !mover_blocks(a, b);
   }
   // Sight lines from one point `a` to each of `ends` (at most TriangleIndex::kMaxFan): bit i
   // of the result is set when line_of_sight(a, ends[i]) holds. The level's triangles answer
@@ -102,6 +100,12 @@ class SceneAtTime {
 
  private:
   static constexpr std::size_t kGroupSize = 4;
+  // Whether a static box blocks a -> b: the nearby list when it covers the segment (the
+  // same answer), else the scene's BoxTree.
+  bool boxes_block(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    return nearby_ && nearby_->covers(a, b) ? nearby_->segment_blocked(a, b)
+                                            : scene_->solid_tree().segment_blocked(a, b);
+  }
   // Sorts the movers into groups and computes bounds_ and the groups' bounds.
   void regroup();
   // The movers touching the nearby boxes' region at time_ (near_movers_, near_region_).
