@@ -136,6 +136,11 @@ camera::Scene finish(std::string name, std::string description, std::vector<came
       }
     }
   }
+  place_camera_start(scene);
+  return scene;
+}
+
+void place_camera_start(camera::Scene& scene) {
   const double start = scene.trajectory().start_time();
   camera::SceneAtTime now(scene);
   now.set_time(start);
@@ -148,7 +153,6 @@ camera::Scene finish(std::string name, std::string description, std::vector<came
       break;
     }
   }
-  return scene;
 }
 
 }  // namespace sightline::experiments::scene_building

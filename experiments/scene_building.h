@@ -56,6 +56,11 @@ void add_ceiling(const std::vector<Rect>& open, double thickness, double y,
 // 225 deg/s (0.4 s for a quarter turn, at least 0.4 s).
 camera::Trajectory walk(const std::vector<Eigen::Vector3d>& points, double speed);
 
+// Starts the camera 4 m behind and 1 m above the look-at point at the first frame, drawn in
+// toward it until it is clear (0.4 m, movers included where they stand then) and in sight;
+// left as the scene's default when no such point is found. Every generated scene does this.
+void place_camera_start(camera::Scene& scene);
+
 // A generated scene's name: "<family>-seed-<seed>".
 std::string family_scene_name(const char* family, std::uint64_t seed);
 

@@ -9,6 +9,7 @@
 
 #include "domains/camera/scene_at_time.h"
 #include "experiments/independent_check.h"
+#include "experiments/scene_building.h"
 
 namespace sightline::experiments {
 namespace {
@@ -58,21 +59,7 @@ camera::Scene finish(std::string name, std::vector<camera::SolidBox> boxes,
   camera::Scene scene(std::move(name), std::move(boxes), std::move(areas),
                       camera::CharacterShape{}, walk(path, speed), 60);
   scene.set_movers(std::move(movers));
-  // Start the camera behind the character, lowered toward the character until it is clear
-  // (of the movers too, where they stand at the first frame).
-  const double start = scene.trajectory().start_time();
-  camera::SceneAtTime now(scene);
-  now.set_time(start);
-  const camera::CharacterState c = scene.character_at(start);
-  const Eigen::Vector3d look = scene.character().look_at(c.position);
-  for (double f = 1.0; f > 0.05; f -= 0.05) {
-    const Eigen::Vector3d p =
-        look + f * (Eigen::Vector3d(-4 * c.facing().x(), 1.0, -4 * c.facing().z()));
-    if (now.clearance(p, 0.5) >= 0.4 && now.line_of_sight(p, look)) {
-      scene.set_camera_start(p);
-      break;
-    }
-  }
+  scene_building::place_camera_start(scene);
   return scene;
 }
 
