@@ -73,14 +73,18 @@ class WalkMaker {
 
  private:
   // True when the person would be inside the level's solid volume (if it has one) on the
-  // way from `from` along `plan`.
+  // way through `feet` (first_in_solid).
+  bool in_solid(const std::vector<Eigen::Vector3d>& feet) const {
+    return solid_ != nullptr && first_in_solid(feet, *solid_).has_value();
+  }
+  // The same on the way from `from` along `plan`.
   bool enters_solid(const Eigen::Vector3d& from, const std::vector<Straight>& plan) const {
     if (solid_ == nullptr) return false;
     std::vector<Eigen::Vector3d> feet = {from};
     for (const Straight& straight : plan) {
       for (const Placed& p : straight.keyframes) feet.push_back(p.feet);
     }
-    return first_in_solid(feet, *solid_).has_value();
+    return in_solid(feet);
   }
 
   std::optional<std::vector<Straight>> plan_route(
@@ -204,7 +208,7 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
     const Eigen::Vector3d p = nav_.random_point(rng);
     start = feet_under(p, p.y());
     if (start && !probe_.has_headroom(*start)) start.reset();
-    if (start && solid_ && first_in_solid({*start}, *solid_)) start.reset();
+    if (start && in_solid({*start})) start.reset();
   }
   if (!start) {
     throw WalkError(
@@ -303,7 +307,7 @@ LevelWalk WalkMaker::walk(std::mt19937_64& rng) const {
     } else {
       feet = feet_under(p, p.y());
       if (feet && !(probe_.has_headroom(*feet) && probe_.body_clear(before.position, *feet) &&
-                    !(solid_ && first_in_solid({before.position, *feet}, *solid_)))) {
+                    !in_solid({before.position, *feet}))) {
         feet.reset();
       }
     }
