@@ -20,12 +20,14 @@ struct ViewOptions {
   std::vector<std::string> traces;
   std::string out;
   std::string assets = "inline";
+  double max_speed = 8.0;
 };
 
 void run_view(const ViewOptions& o) {
   experiments::TraceViewOptions options;
   options.scene_path = o.scene;
   options.trace_paths = o.traces;
+  options.max_speed = o.max_speed;
   if (o.assets == "beside") {
     // view.html -> view-assets/ beside it, named relative to the page.
     const std::filesystem::path out(o.out);
@@ -49,7 +51,9 @@ void run_view(const ViewOptions& o) {
   for (const experiments::TraceViewRunSummary& r : view.runs) {
     std::cout << "  " << r.id << ": " << r.path << ", " << r.frames << " frames, look-at point "
               << "hidden in " << r.hidden_frames << " (independent check), " << r.cuts << " cut"
-              << (r.cuts == 1 ? "" : "s") << "\n";
+              << (r.cuts == 1 ? "" : "s") << ", " << r.unflagged_jumps << " unflagged jump"
+              << (r.unflagged_jumps == 1 ? "" : "s") << " (faster than "
+              << o.max_speed << " m/s without a cut flag)\n";
   }
 }
 
@@ -70,6 +74,10 @@ void add_view_command(CLI::App& app) {
                   "three.js and the scene data: inline (one self-contained page, the default) "
                   "or beside (in OUT-STEM-assets/ next to the page, for big levels)")
       ->check(CLI::IsMember({"inline", "beside"}));
+  cmd->add_option("--max-speed", options->max_speed,
+                  "m/s: a faster move without a cut flag counts as an unflagged jump "
+                  "(default 8, the chase camera's smooth-motion bound)")
+      ->check(CLI::PositiveNumber);
   cmd->callback([options] { run_view(*options); });
 }
 

@@ -128,6 +128,19 @@ std::vector<std::string> run_ids_from_paths(const std::vector<std::string>& path
   return ids;
 }
 
+int unflagged_jumps(const std::vector<TraceRow>& trace, double max_speed) {
+  // Traces round positions to a tenth of a millimetre and times to a tenth of a millisecond:
+  // allow for both, on both ends of a step.
+  constexpr double kPositionRounding = 2e-4, kTimeRounding = 1e-4;
+  int jumps = 0;
+  for (std::size_t i = 1; i < trace.size(); ++i) {
+    const double dt = trace[i].t - trace[i - 1].t;
+    const double step = (trace[i].camera - trace[i - 1].camera).norm();
+    if (!trace[i].cut && step > max_speed * (dt + kTimeRounding) + kPositionRounding) ++jumps;
+  }
+  return jumps;
+}
+
 TraceView make_trace_view(const TraceViewOptions& options) {
   if (options.trace_paths.empty()) {
     throw std::invalid_argument("no trace given: name one or more with --trace FILE.csv");
@@ -155,6 +168,7 @@ TraceView make_trace_view(const TraceViewOptions& options) {
     summary.frames = static_cast<int>(run.trace.size());
     for (const char h : run.hidden) summary.hidden_frames += h;
     for (const TraceRow& r : run.trace) summary.cuts += r.cut ? 1 : 0;
+    summary.unflagged_jumps = unflagged_jumps(run.trace, options.max_speed);
     view.runs.push_back(summary);
     replay.runs.push_back(std::move(run));
   }

@@ -46,9 +46,16 @@ std::vector<char> hidden_frames(const MetricsInput& world, const std::vector<Tra
 // id gets "-2", "-3", ... in the order given.
 std::vector<std::string> run_ids_from_paths(const std::vector<std::string>& paths);
 
+// Frames whose camera moved faster than max_speed (m/s) since the frame before without a
+// cut flag (positions' rounding allowed for).
+int unflagged_jumps(const std::vector<TraceRow>& trace, double max_speed);
+
 struct TraceViewOptions {
   std::string scene_path;
   std::vector<std::string> trace_paths;  // at least one
+  // A move faster than this (m/s, over the frame's time step) without a cut flag is an
+  // unflagged jump; the default is the chase camera's smooth-motion bound.
+  double max_speed = 8.0;
   ReplayOptions replay;
 };
 
@@ -59,6 +66,7 @@ struct TraceViewRunSummary {
   int frames = 0;
   int hidden_frames = 0;  // independent check
   int cuts = 0;
+  int unflagged_jumps = 0;  // moves faster than TraceViewOptions::max_speed, not flagged cuts
 };
 
 struct TraceView {

@@ -7,7 +7,8 @@ namespace sightline::camera {
 AreaProfileSwitch::AreaProfileSwitch(const SceneAtTime& scene, const CameraProfile& profile)
     : scene_(&scene.scene()),
       profile_(&profile),
-      senses_(scene.scene().level() != nullptr && scene.scene().areas().empty() &&
+      senses_((scene.scene().level() != nullptr || scene.scene().world() != nullptr) &&
+              scene.scene().areas().empty() &&
               profile.sensing.enabled),
       sensor_(scene, profile) {
   current_.desired_height = profile.height.desired;

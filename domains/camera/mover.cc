@@ -68,3 +68,13 @@ Aabb Mover::swept_box() const {
 }
 
 }  // namespace sightline::camera
+
+namespace sightline::camera {
+
+void Mover::place(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, double t) {
+  path_.resize(2);
+  path_[0] = MoverKeyframe{t, position};
+  path_[1] = MoverKeyframe{t + kForecastSeconds, position + kForecastSeconds * velocity};
+}
+
+}  // namespace sightline::camera

@@ -44,6 +44,11 @@ class Mover {
   Aabb box_at(double t) const { return Aabb::around_feet(position_at(t), size_); }
   // Velocity at time t (m/s): that of the segment holding t, zero outside the path.
   Eigen::Vector3d velocity_at(double t) const;
+  // Replaces the path by a constant-velocity forecast: at `position` at time t and until
+  // then, moving with `velocity` for kForecastSeconds after it, then still. Allocates nothing
+  // when the path already holds two keyframes. Requires finite values.
+  static constexpr double kForecastSeconds = 10.0;
+  void place(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, double t);
   // Every box the mover occupies between the first and the last keyframe (the union of its
   // boxes along the path).
   Aabb swept_box() const;

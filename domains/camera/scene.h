@@ -36,6 +36,7 @@
 #include "domains/camera/mover.h"
 #include "domains/camera/profile.h"
 #include "domains/camera/trajectory.h"
+#include "sightline/world.h"
 
 namespace sightline::camera {
 
@@ -108,7 +109,26 @@ class Scene {
   // The level, when the scene has one (null otherwise). Setting it builds its index.
   const Level* level() const { return level_.get(); }
   void set_level(std::shared_ptr<const Level> level);
+  // Takes `other`'s level and its index (built once, shared by both scenes).
+  void share_level(const Scene& other) {
+    level_ = other.level_;
+    triangles_ = other.triangles_;
+  }
   const TriangleIndex& triangle_index() const { return *triangles_; }
+
+  // A world that answers the geometry itself (sightline/world.h: a game's physics, through
+  // the public API), or null. With one, SceneAtTime asks it every query at the frame's time
+  // instead of the boxes and level (such a scene has neither), and adds the movers. Scene's
+  // own static queries below do not ask it.
+  const sightline::World* world() const { return world_.get(); }
+  void set_world(std::shared_ptr<const sightline::World> world) { world_ = std::move(world); }
+  // Mover i's path becomes a constant-velocity forecast from `position` at time t: the
+  // public camera places the people a game reports each frame this way. Allocates nothing
+  // once the path holds two keyframes.
+  void place_mover(std::size_t i, const Eigen::Vector3d& position,
+                   const Eigen::Vector3d& velocity, double t) {
+    movers_[i].place(position, velocity, t);
+  }
 
   // The camera's start, when the file gives one; otherwise the profile's ideal spot.
   const std::optional<Eigen::Vector3d>& camera_start() const { return camera_start_; }
@@ -173,6 +193,7 @@ class Scene {
   std::shared_ptr<const Level> level_;
   // Shared, so scenes stay copyable; never null (empty without a level).
   std::shared_ptr<const TriangleIndex> triangles_;
+  std::shared_ptr<const sightline::World> world_;
 };
 
 }  // namespace sightline::camera

@@ -8,8 +8,39 @@
 
 namespace sightline::camera {
 
+namespace {
+
+sightline::Vec3 to_vec3(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+Eigen::Vector3d to_eigen(const sightline::Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+bool SceneAtTime::world_line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  return world_->line_of_sight(to_vec3(a), to_vec3(b), time_);
+}
+
+std::optional<SurfaceHit> SceneAtTime::world_first_hit(const Eigen::Vector3d& a,
+                                                       const Eigen::Vector3d& b) const {
+  const std::optional<sightline::WorldHit> hit = world_->first_hit(to_vec3(a), to_vec3(b), time_);
+  if (!hit) return std::nullopt;
+  SurfaceHit h;
+  h.t = std::clamp(hit->fraction, 0.0, 1.0);
+  h.source = SurfaceHit::Source::kBox;
+  h.index = 0;
+  h.normal = to_eigen(hit->normal);
+  return h;
+}
+
+std::optional<NearestSurface> SceneAtTime::world_nearest_surface(const Eigen::Vector3d& p,
+                                                                 double limit) const {
+  const auto s = world_->nearest_surface(to_vec3(p), limit, time_);
+  if (!s) return std::nullopt;
+  return NearestSurface{s->signed_distance, to_eigen(s->gradient)};
+}
+
 SceneAtTime::SceneAtTime(const Scene& scene)
     : scene_(&scene),
+      world_(scene.world()),
       boxes_(scene.movers().size()),
       segments_(scene.movers().size(), 0),
       order_(scene.movers().size()),
@@ -98,6 +129,13 @@ bool SceneAtTime::mover_blocks(const Eigen::Vector3d& a, const Eigen::Vector3d& 
 
 std::uint32_t SceneAtTime::static_blocked(const Eigen::Vector3d& a,
                                           std::span<const Eigen::Vector3d> ends) const {
+  if (world_) {
+    std::uint32_t hidden = 0;
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      if (!world_line_of_sight(a, ends[i])) hidden |= 1u << i;
+    }
+    return hidden;
+  }
   std::uint32_t blocked = scene_->triangle_index().segments_blocked(a, ends);
   if (scene_->solids().empty()) return blocked;
   for (std::size_t i = 0; i < ends.size(); ++i) {
@@ -118,7 +156,7 @@ std::uint32_t SceneAtTime::lines_of_sight(const Eigen::Vector3d& a,
 
 std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
                                                  const Eigen::Vector3d& b) const {
-  std::optional<SurfaceHit> best = scene_->first_hit(a, b);
+  std::optional<SurfaceHit> best = world_ ? world_first_hit(a, b) : scene_->first_hit(a, b);
   if (boxes_.empty()) return best;
   const Eigen::Vector3d delta = b - a;
   SegmentClip clip;
@@ -159,6 +197,7 @@ double SceneAtTime::clearance(const Eigen::Vector3d& p, double limit) const {
     }
     return grouped_mover_clearance(p, d, limit);
   }
+  if (world_) return grouped_mover_clearance(p, world_->clearance(to_vec3(p), limit, time_), limit);
   return grouped_mover_clearance(p, scene_->clearance(p, limit), limit);
 }
 
@@ -193,7 +232,8 @@ double SceneAtTime::grouped_mover_clearance(const Eigen::Vector3d& p, double d,
 
 std::optional<NearestSurface> SceneAtTime::nearest_surface(const Eigen::Vector3d& p,
                                                            double limit) const {
-  std::optional<NearestSurface> best = scene_->nearest_surface(p, limit);
+  std::optional<NearestSurface> best =
+      world_ ? world_nearest_surface(p, limit) : scene_->nearest_surface(p, limit);
   for (std::size_t g = 0; g < group_bounds_.size(); ++g) {
     const double bound = group_bounds_[g].signed_distance(p);
     if (bound >= limit || (best && bound >= best->signed_distance)) continue;
@@ -209,7 +249,7 @@ std::optional<NearestSurface> SceneAtTime::nearest_surface(const Eigen::Vector3d
 }
 
 bool SceneAtTime::open_at(const Eigen::Vector3d& p) const {
-  if (!scene_->open_at(p)) return false;
+  if (world_ ? !world_->open_at(to_vec3(p), time_) : !scene_->open_at(p)) return false;
   // As Scene::open_at: strictly inside a box is closed, its faces are open.
   for (const Aabb& box : boxes_) {
     if (box.signed_distance(p) < 0) return false;

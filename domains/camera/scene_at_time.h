@@ -58,12 +58,13 @@ class SceneAtTime {
   // Ignored in a scene without static boxes (a level: its triangles have their own index),
   // where the list could only cost a test per query.
   void set_nearby(const NearbyBoxes* nearby) {
-    nearby_ = scene_->solids().empty() ? nullptr : nearby;
+    nearby_ = scene_->solids().empty() || world_ ? nullptr : nearby;
     find_near_movers();
   }
 
   // --- Scene's queries, with the movers at time() (see scene.h for their meaning) ---
   bool line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+    if (world_) return world_line_of_sight(a, b) && !mover_blocks(a, b);
     return !boxes_block(a, b) && !scene_->triangle_index().segment_blocked(a, b) &&
            !mover_blocks(a, b);
   }
@@ -106,6 +107,13 @@ class SceneAtTime {
     return nearby_ && nearby_->covers(a, b) ? nearby_->segment_blocked(a, b)
                                             : scene_->solid_tree().segment_blocked(a, b);
   }
+  // The scene's world (Scene::world()) at time_: its answers, with SurfaceHit's and
+  // NearestSurface's meaning (a world hit is reported as a box, index 0).
+  bool world_line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  std::optional<SurfaceHit> world_first_hit(const Eigen::Vector3d& a,
+                                            const Eigen::Vector3d& b) const;
+  std::optional<NearestSurface> world_nearest_surface(const Eigen::Vector3d& p,
+                                                      double limit) const;
   // Sorts the movers into groups and computes bounds_ and the groups' bounds.
   void regroup();
   // The movers touching the nearby boxes' region at time_ (near_movers_, near_region_).
@@ -115,6 +123,7 @@ class SceneAtTime {
 
   const Scene* scene_;
   const NearbyBoxes* nearby_ = nullptr;
+  const sightline::World* world_ = nullptr;  // scene_->world()
   double time_ = 0;
   std::vector<Aabb> boxes_;
   std::vector<std::size_t> segments_;  // each mover's keyframe segment at time_
