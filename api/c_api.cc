@@ -239,12 +239,18 @@ sl_status sl_camera_create(sl_world* world, const sl_camera_settings* settings,
 sl_status sl_camera_update(sl_camera* camera, const sl_person_state* people, size_t count, double dt,
                            sl_pose* out) {
   if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update: not a live camera");
+  return sl_camera_update_at(camera, people, count, dt, camera->camera->time() + dt, out);
+}
+
+sl_status sl_camera_update_at(sl_camera* camera, const sl_person_state* people, size_t count,
+                              double dt, double t, sl_pose* out) {
+  if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update_at: not a live camera");
   if (people == nullptr || out == nullptr) {
     return fail(SL_ERROR_INVALID_ARGUMENT, "sl_camera_update: people and out must not be NULL");
   }
   return guarded([&] {
     const auto states = people_of(people, count);
-    const sightline::CameraPose& p = camera->camera->update(states, dt);
+    const sightline::CameraPose& p = camera->camera->update(states, dt, t);
     out->position = to_c(p.position);
     out->target = to_c(p.target);
     out->up = to_c(p.up);

@@ -13,11 +13,11 @@
 
 #include "api/conversions.h"
 #include "api/geometry_world.h"
-#include "csp/files/yaml_spec.h"
-#include "csp/input_error.h"
-#include "domains/camera/control/camera_solvers.h"
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/profile_file.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/profile_file.h"
 #include "sightline/version.h"
 
 namespace sightline {
@@ -213,10 +213,16 @@ Camera::Camera(Camera&&) noexcept = default;
 Camera& Camera::operator=(Camera&&) noexcept = default;
 
 const CameraPose& Camera::update(std::span<const PersonState> people, double dt) {
+  return update(people, dt, impl_->t + dt);
+}
+
+const CameraPose& Camera::update(std::span<const PersonState> people, double dt, double t) {
   Impl& m = *impl_;
   if (!(dt > 0) || !std::isfinite(dt)) throw Error("camera: dt must be finite and > 0 seconds");
+  if (!std::isfinite(t) || !(t > m.t)) {
+    throw Error("camera: the time must be finite and later than the last update's");
+  }
   check_people(people, m.people);
-  const double t = m.t + dt;
   for (std::size_t i = 1; i < people.size(); ++i) {
     m.scene.place_mover(i - 1, to_eigen(people[i].position), to_eigen(people[i].velocity), t);
   }

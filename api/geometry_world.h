@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/scene.h"
 #include "sightline/world.h"
 
 namespace sightline {

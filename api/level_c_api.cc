@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 struct sl_level {
   std::vector<double> vertices;

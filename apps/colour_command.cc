@@ -7,7 +7,7 @@
 #include "apps/report.h"
 #include "apps/solve_options.h"
 #include "apps/text_table.h"
-#include "domains/colouring/colouring_problem.h"
+#include "sightline/domains/colouring/colouring_problem.h"
 
 namespace sightline::apps {
 

@@ -17,9 +17,9 @@
 #include "apps/problem_loader.h"
 #include "apps/solve_options.h"
 #include "apps/text_table.h"
-#include "domains/colouring/colouring_problem.h"
-#include "domains/nqueens/nqueens.h"
-#include "solvers/registry.h"
+#include "sightline/domains/colouring/colouring_problem.h"
+#include "sightline/domains/nqueens/nqueens.h"
+#include "sightline/solvers/registry.h"
 
 #ifndef SIGHTLINE_EXAMPLES_DIR
 #define SIGHTLINE_EXAMPLES_DIR "examples"

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "apps/commands.h"
-#include "csp/input_error.h"
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
-#include "solvers/registry.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::apps {
 namespace {

@@ -3,8 +3,8 @@
 
 #include "apps/commands.h"
 #include "apps/text_table.h"
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/constraint_entry.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_entry.h"
 
 namespace sightline::apps {
 

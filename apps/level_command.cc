@@ -15,9 +15,9 @@
 #include <string>
 
 #include "apps/commands.h"
-#include "domains/camera/level/level.h"
-#include "experiments/level_walk.h"
-#include "experiments/spawn_points.h"
+#include "sightline/domains/camera/level/level.h"
+#include "sightline/experiments/level_walk.h"
+#include "sightline/experiments/spawn_points.h"
 
 namespace sightline::apps {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
-#include "domains/camera/control/camera_solvers.h"
-#include "solvers/toulbar2/toulbar2_solver.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/solvers/toulbar2/toulbar2_solver.h"
 
 int main(int argc, char** argv) {
   namespace apps = sightline::apps;

@@ -7,7 +7,7 @@
 #include "apps/report.h"
 #include "apps/solve_options.h"
 #include "apps/text_table.h"
-#include "domains/nqueens/nqueens.h"
+#include "sightline/domains/nqueens/nqueens.h"
 
 namespace sightline::apps {
 

@@ -2,12 +2,12 @@
 
 #include <string_view>
 
-#include "csp/files/cfn_reader.h"
-#include "csp/files/problem_file.h"
-#include "csp/files/wcsp_reader.h"
-#include "csp/input_error.h"
-#include "domains/colouring/colouring_problem.h"
-#include "domains/colouring/dimacs_reader.h"
+#include "sightline/csp/files/cfn_reader.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/colouring/colouring_problem.h"
+#include "sightline/domains/colouring/dimacs_reader.h"
 
 namespace sightline::apps {
 namespace {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::apps {
 

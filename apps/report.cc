@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "apps/text_table.h"
-#include "solvers/options.h"
+#include "sightline/solvers/options.h"
 
 namespace sightline::apps {
 

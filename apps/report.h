@@ -10,8 +10,8 @@
 #include <span>
 #include <string>
 
-#include "csp/problem.h"
-#include "solvers/solver.h"
+#include "sightline/csp/problem.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::apps {
 

@@ -18,12 +18,12 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
-#include "experiments/mpi_engine.h"
-#include "experiments/isolated_run.h"
-#include "experiments/report.h"
-#include "experiments/suite.h"
-#include "experiments/suite_ranking.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/mpi_engine.h"
+#include "sightline/experiments/isolated_run.h"
+#include "sightline/experiments/report.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_ranking.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::apps {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "apps/commands.h"
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/scene_file.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/scene_file.h"
 
 namespace sightline::apps {
 namespace {

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "solvers/registry.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/registry.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::apps {
 

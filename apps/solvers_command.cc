@@ -3,7 +3,7 @@
 
 #include "apps/commands.h"
 #include "apps/text_table.h"
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::apps {
 

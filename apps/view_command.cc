@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "apps/commands.h"
-#include "experiments/trace_view.h"
+#include "sightline/experiments/trace_view.h"
 
 namespace sightline::apps {
 namespace {

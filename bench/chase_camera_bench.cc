@@ -24,13 +24,13 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/metrics.h"
-#include "experiments/scene_files.h"
-#include "experiments/scene_generator.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/scene_generator.h"
 
 namespace {
 

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/geometry/triangle_index.h"
-#include "domains/camera/level/level.h"
-#include "domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/level/level.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
 
 namespace {
 

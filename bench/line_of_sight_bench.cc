@@ -21,7 +21,7 @@
 #include <random>
 #include <vector>
 
-#include "domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
 
 namespace {
 

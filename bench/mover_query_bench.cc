@@ -19,8 +19,8 @@
 #include <random>
 #include <vector>
 
-#include "domains/camera/geometry/box_tree.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace {
 

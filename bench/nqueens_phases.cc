@@ -10,8 +10,8 @@
 #include <memory>
 #include <string>
 
-#include "domains/nqueens/nqueens.h"
-#include "solvers/registry.h"
+#include "sightline/domains/nqueens/nqueens.h"
+#include "sightline/solvers/registry.h"
 
 namespace {
 

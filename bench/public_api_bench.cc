@@ -11,8 +11,8 @@
 #include <ctime>
 #include <memory>
 
-#include "domains/camera/scene_file.h"
-#include "experiments/metrics.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/metrics.h"
 #include "sightline/camera.h"
 #include "sightline/sightline.h"
 

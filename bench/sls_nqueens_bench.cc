@@ -14,8 +14,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "domains/nqueens/nqueens.h"
-#include "solvers/registry.h"
+#include "sightline/domains/nqueens/nqueens.h"
+#include "sightline/solvers/registry.h"
 
 namespace {
 

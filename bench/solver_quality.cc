@@ -25,12 +25,12 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/camera_solvers.h"
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/metrics.h"
-#include "experiments/scene_files.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/scene_files.h"
 
 namespace {
 

@@ -32,9 +32,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/geometry/box_tree.h"
-#include "domains/camera/geometry/triangle_index.h"
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/level/q3_level.h"
 
 namespace {
 

@@ -24,8 +24,8 @@
 #include <sstream>
 #include <ctime>
 
-#include "csp/files/wcsp_reader.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/solvers/registry.h"
 
 namespace {
 

@@ -1,10 +1,10 @@
-#include "csp/builder.h"
+#include "sightline/csp/builder.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/constraint_entry.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_entry.h"
 
 namespace sightline::csp {
 

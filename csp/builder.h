@@ -21,8 +21,8 @@
 #include <utility>
 #include <vector>
 
-#include "csp/problem.h"
-#include "csp/spec.h"
+#include "sightline/csp/problem.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/constraint.h"
+#include "sightline/csp/constraint.h"
 
 #include <algorithm>
 #include <cmath>

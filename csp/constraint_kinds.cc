@@ -1,4 +1,4 @@
-#include "csp/constraint_kinds.h"
+#include "sightline/csp/constraint_kinds.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "csp/domain.h"
+#include "sightline/csp/domain.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "csp/incremental_evaluator.h"
+#include "sightline/csp/incremental_evaluator.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/parameters.h"
+#include "sightline/csp/parameters.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 #include <algorithm>
 #include <charconv>

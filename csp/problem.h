@@ -24,10 +24,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "csp/constraint.h"
-#include "csp/domain.h"
-#include "csp/parameters.h"
-#include "csp/score.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/csp/domain.h"
+#include "sightline/csp/parameters.h"
+#include "sightline/csp/score.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/spec.h"
+#include "sightline/csp/spec.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::csp {
 

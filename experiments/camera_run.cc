@@ -1,4 +1,4 @@
-#include "experiments/camera_run.h"
+#include "sightline/experiments/camera_run.h"
 
 #include <iomanip>
 #include <sstream>

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/control/camera_controller.h"
-#include "domains/camera/scene.h"
-#include "experiments/metrics.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline::experiments {
 

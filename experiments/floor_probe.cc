@@ -1,4 +1,4 @@
-#include "experiments/floor_probe.h"
+#include "sightline/experiments/floor_probe.h"
 
 namespace sightline::experiments {
 

@@ -12,8 +12,8 @@
 #include <Eigen/Geometry>
 #include <optional>
 
-#include "domains/camera/geometry/triangle_index.h"
-#include "domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/html_text.h"
+#include "sightline/experiments/html_text.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/independent_check.h"
+#include "sightline/experiments/independent_check.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "experiments/independent_triangles.h"
+#include "sightline/experiments/independent_triangles.h"
 
 #include <Eigen/Geometry>
 

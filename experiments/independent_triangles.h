@@ -16,7 +16,7 @@
 #include <limits>
 #include <vector>
 
-#include "domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
 
 namespace sightline::experiments {
 

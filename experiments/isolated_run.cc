@@ -1,4 +1,4 @@
-#include "experiments/isolated_run.h"
+#include "sightline/experiments/isolated_run.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "experiments/provenance.h"
+#include "sightline/experiments/provenance.h"
 
 namespace sightline::experiments {
 namespace {

@@ -15,9 +15,9 @@
 #include <cstdint>
 #include <string>
 
-#include "experiments/run_isolation.h"
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/run_isolation.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

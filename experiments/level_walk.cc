@@ -1,4 +1,4 @@
-#include "experiments/level_walk.h"
+#include "sightline/experiments/level_walk.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,8 +7,8 @@
 #include <random>
 #include <sstream>
 
-#include "experiments/floor_probe.h"
-#include "experiments/navigation_mesh.h"
+#include "sightline/experiments/floor_probe.h"
+#include "sightline/experiments/navigation_mesh.h"
 
 namespace sightline::experiments {
 namespace {

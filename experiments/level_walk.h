@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/geometry/solid_volume.h"
-#include "domains/camera/geometry/triangle_mesh.h"
-#include "domains/camera/level/level_transform.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/domains/camera/geometry/solid_volume.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/level/level_transform.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/metrics.h"
+#include "sightline/experiments/metrics.h"
 
 #include <algorithm>
 #include <cmath>

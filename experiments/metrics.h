@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "experiments/independent_check.h"
-#include "experiments/independent_triangles.h"
-#include "experiments/trace.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/independent_triangles.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline::experiments {
 

@@ -1,6 +1,6 @@
-#include "experiments/mpi_engine.h"
+#include "sightline/experiments/mpi_engine.h"
 
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <unistd.h>
 
@@ -18,8 +18,8 @@
 #include <utility>
 #include <vector>
 
-#include "experiments/run_order.h"
-#include "experiments/stable_hash.h"
+#include "sightline/experiments/run_order.h"
+#include "sightline/experiments/stable_hash.h"
 
 #ifdef SIGHTLINE_HAVE_MPI
 // The C API only: Open MPI's and MPICH's headers would otherwise pull in the C++ bindings.

@@ -32,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

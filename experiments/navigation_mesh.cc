@@ -1,4 +1,4 @@
-#include "experiments/navigation_mesh.h"
+#include "sightline/experiments/navigation_mesh.h"
 
 #include <DetourNavMesh.h>
 #include <DetourNavMeshBuilder.h>

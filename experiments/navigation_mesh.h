@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/geometry/triangle_mesh.h"
-#include "experiments/level_walk.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
+#include "sightline/experiments/level_walk.h"
 
 namespace sightline::experiments {
 

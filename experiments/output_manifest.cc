@@ -1,4 +1,4 @@
-#include "experiments/output_manifest.h"
+#include "sightline/experiments/output_manifest.h"
 
 #include <unistd.h>
 
@@ -9,8 +9,8 @@
 #include <set>
 #include <sstream>
 
-#include "experiments/stable_hash.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/stable_hash.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 namespace {

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/suite.h"
+#include "sightline/experiments/suite.h"
 
 namespace sightline::experiments {
 

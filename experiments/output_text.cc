@@ -1,4 +1,4 @@
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <cstdio>
 #include <filesystem>

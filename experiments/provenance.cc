@@ -1,4 +1,4 @@
-#include "experiments/provenance.h"
+#include "sightline/experiments/provenance.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/replay.h"
+#include "sightline/experiments/replay.h"
 
 #include <algorithm>
 #include <bit>
@@ -11,9 +11,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "experiments/html_text.h"
-#include "experiments/replay_sources.h"
-#include "experiments/stable_hash.h"
+#include "sightline/experiments/html_text.h"
+#include "sightline/experiments/replay_sources.h"
+#include "sightline/experiments/stable_hash.h"
 
 namespace sightline::experiments {
 namespace {

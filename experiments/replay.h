@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline::experiments {
 

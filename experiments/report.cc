@@ -1,6 +1,6 @@
-#include "experiments/report.h"
+#include "sightline/experiments/report.h"
 
-#include "experiments/camera_run.h"
+#include "sightline/experiments/camera_run.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,9 +10,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "experiments/independent_check.h"
-#include "experiments/report_statistics.h"
-#include "experiments/report_views.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/report_statistics.h"
+#include "sightline/experiments/report_views.h"
 
 namespace sightline::experiments {
 namespace {

@@ -12,9 +12,9 @@
 
 #include <string>
 
-#include "experiments/replay.h"
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/replay.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/report_movers.h"
+#include "sightline/experiments/report_movers.h"
 
 #include <algorithm>
 #include <cmath>

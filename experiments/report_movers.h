@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene.h"
-#include "experiments/report_views.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/report_views.h"
 
 namespace sightline::experiments {
 

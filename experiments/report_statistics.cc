@@ -1,4 +1,4 @@
-#include "experiments/report_statistics.h"
+#include "sightline/experiments/report_statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "experiments/report_views.h"
+#include "sightline/experiments/report_views.h"
 
 namespace sightline::experiments {
 namespace {

@@ -15,9 +15,9 @@
 
 #include <string>
 
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
-#include "experiments/time_profiles.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/time_profiles.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/report_views.h"
+#include "sightline/experiments/report_views.h"
 
 #include <stb_image_write.h>
 
@@ -12,8 +12,8 @@
 #include <limits>
 #include <sstream>
 
-#include "domains/camera/scene_at_time.h"
-#include "experiments/report_movers.h"
+#include "sightline/domains/camera/scene_at_time.h"
+#include "sightline/experiments/report_movers.h"
 
 namespace sightline::experiments {
 namespace {

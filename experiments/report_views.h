@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene.h"
-#include "experiments/html_text.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/html_text.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/run_isolation.h"
+#include "sightline/experiments/run_isolation.h"
 
 #include <fcntl.h>
 #include <poll.h>

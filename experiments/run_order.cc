@@ -1,4 +1,4 @@
-#include "experiments/run_order.h"
+#include "sightline/experiments/run_order.h"
 
 #include <algorithm>
 #include <filesystem>

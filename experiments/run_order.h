@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "experiments/suite.h"
+#include "sightline/experiments/suite.h"
 
 namespace sightline::experiments {
 

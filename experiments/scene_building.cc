@@ -1,4 +1,4 @@
-#include "experiments/scene_building.h"
+#include "sightline/experiments/scene_building.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::experiments::scene_building {
 namespace {

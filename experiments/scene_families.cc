@@ -1,4 +1,4 @@
-#include "experiments/scene_families.h"
+#include "sightline/experiments/scene_families.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "experiments/scene_building.h"
+#include "sightline/experiments/scene_building.h"
 
 namespace sightline::experiments {
 

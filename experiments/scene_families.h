@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::experiments {
 

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <utility>
 
-#include "experiments/scene_building.h"
-#include "experiments/scene_families.h"
+#include "sightline/experiments/scene_building.h"
+#include "sightline/experiments/scene_families.h"
 
 // The stairs family (scene_families.h): flights of stairs, straight, L or U with landings,
 // walled or not, some under a ceiling, climbed or descended. In a file of its own because

@@ -1,4 +1,4 @@
-#include "experiments/scene_files.h"
+#include "sightline/experiments/scene_files.h"
 
 #include <algorithm>
 #include <filesystem>

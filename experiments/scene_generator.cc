@@ -1,4 +1,4 @@
-#include "experiments/scene_generator.h"
+#include "sightline/experiments/scene_generator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene_at_time.h"
-#include "experiments/independent_check.h"
-#include "experiments/scene_building.h"
+#include "sightline/domains/camera/scene_at_time.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/scene_building.h"
 
 namespace sightline::experiments {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::experiments {
 

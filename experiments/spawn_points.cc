@@ -1,12 +1,12 @@
-#include "experiments/spawn_points.h"
+#include "sightline/experiments/spawn_points.h"
 
 #include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
-#include "domains/camera/level/pk3_archive.h"
-#include "domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
 
 namespace sightline::experiments {
 namespace {

@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 namespace sightline::experiments {
 

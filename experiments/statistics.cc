@@ -1,4 +1,4 @@
-#include "experiments/statistics.h"
+#include "sightline/experiments/statistics.h"
 
 #include <algorithm>
 #include <boost/math/distributions/chi_squared.hpp>

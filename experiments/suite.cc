@@ -1,4 +1,4 @@
-#include "experiments/suite.h"
+#include "sightline/experiments/suite.h"
 
 #include <glob.h>
 
@@ -9,14 +9,14 @@
 #include <set>
 #include <sstream>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/control/camera_controller.h"
-#include "domains/camera/control/camera_solvers.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/suite_problem.h"
-#include "experiments/suite_ranking.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/suite_problem.h"
+#include "sightline/experiments/suite_ranking.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::experiments {
 namespace {

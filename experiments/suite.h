@@ -23,13 +23,13 @@
 #include <string>
 #include <vector>
 
-#include "csp/input_error.h"
-#include "csp/spec.h"
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
-#include "experiments/run_isolation.h"
-#include "solvers/solver.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/spec.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/run_isolation.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::experiments {
 

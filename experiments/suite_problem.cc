@@ -1,12 +1,12 @@
-#include "experiments/suite_problem.h"
+#include "sightline/experiments/suite_problem.h"
 
 #include <filesystem>
 
-#include "csp/files/problem_file.h"
-#include "csp/files/wcsp_reader.h"
-#include "domains/colouring/colouring_problem.h"
-#include "domains/colouring/graph.h"
-#include "domains/nqueens/nqueens.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/domains/colouring/colouring_problem.h"
+#include "sightline/domains/colouring/graph.h"
+#include "sightline/domains/nqueens/nqueens.h"
 
 namespace sightline::experiments {
 namespace {

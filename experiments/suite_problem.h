@@ -13,8 +13,8 @@
 #include <span>
 #include <string>
 
-#include "csp/problem.h"
-#include "experiments/suite.h"
+#include "sightline/csp/problem.h"
+#include "sightline/experiments/suite.h"
 
 namespace sightline::experiments {
 

@@ -1,6 +1,6 @@
-#include "experiments/suite_ranking.h"
+#include "sightline/experiments/suite_ranking.h"
 
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include "experiments/statistics.h"
-#include "experiments/time_profiles.h"
+#include "sightline/experiments/statistics.h"
+#include "sightline/experiments/time_profiles.h"
 
 namespace sightline::experiments {
 namespace {

@@ -25,10 +25,10 @@
 #include <string>
 #include <vector>
 
-#include "csp/input_error.h"
-#include "csp/spec.h"
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/spec.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

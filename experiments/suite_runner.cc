@@ -1,6 +1,6 @@
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/suite_runner.h"
 
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <unistd.h>
 
@@ -20,12 +20,12 @@
 #include <stdexcept>
 #include <thread>
 
-#include "experiments/camera_run.h"
-#include "experiments/isolated_run.h"
-#include "experiments/output_manifest.h"
-#include "experiments/suite_problem.h"
-#include "experiments/suite_statistics.h"
-#include "solvers/registry.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/isolated_run.h"
+#include "sightline/experiments/output_manifest.h"
+#include "sightline/experiments/suite_problem.h"
+#include "sightline/experiments/suite_statistics.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::experiments {
 namespace {

@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "csp/problem.h"
-#include "experiments/provenance.h"
-#include "experiments/suite.h"
+#include "sightline/csp/problem.h"
+#include "sightline/experiments/provenance.h"
+#include "sightline/experiments/suite.h"
 
 namespace sightline::experiments {
 

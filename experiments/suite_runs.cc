@@ -1,11 +1,11 @@
-#include "experiments/suite.h"
+#include "sightline/experiments/suite.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "domains/camera/profile_text.h"
-#include "experiments/stable_hash.h"
+#include "sightline/domains/camera/profile_text.h"
+#include "sightline/experiments/stable_hash.h"
 
 // How a suite becomes runs: every scene x solver x profile x seed (and problem x solver x
 // seed), each with a definition and an id that hashes it (suite.h). Reading the suite file

@@ -1,6 +1,6 @@
-#include "experiments/suite_statistics.h"
+#include "sightline/experiments/suite_statistics.h"
 
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <tuple>
 #include <vector>
 
-#include "experiments/statistics.h"
-#include "experiments/suite_ranking.h"
-#include "experiments/time_profiles.h"
+#include "sightline/experiments/statistics.h"
+#include "sightline/experiments/suite_ranking.h"
+#include "sightline/experiments/time_profiles.h"
 
 namespace sightline::experiments {
 namespace {

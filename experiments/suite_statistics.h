@@ -22,8 +22,8 @@
 #include <utility>
 #include <vector>
 
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

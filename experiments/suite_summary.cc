@@ -8,8 +8,8 @@
 #include <map>
 #include <sstream>
 
-#include "experiments/suite_runner.h"
-#include "experiments/suite_statistics.h"
+#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/suite_statistics.h"
 
 namespace sightline::experiments {
 namespace {

@@ -1,6 +1,6 @@
-#include "experiments/time_profiles.h"
+#include "sightline/experiments/time_profiles.h"
 
-#include "experiments/output_text.h"
+#include "sightline/experiments/output_text.h"
 
 #include <algorithm>
 #include <cmath>

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "experiments/statistics.h"
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/statistics.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 
 namespace sightline::experiments {
 

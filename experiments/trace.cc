@@ -1,4 +1,4 @@
-#include "experiments/trace.h"
+#include "sightline/experiments/trace.h"
 
 #include <cctype>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::experiments {
 namespace {

@@ -1,4 +1,4 @@
-#include "experiments/trace_view.h"
+#include "sightline/experiments/trace_view.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "csp/input_error.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
 
 namespace sightline::experiments {
 namespace {

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene.h"
-#include "experiments/metrics.h"
-#include "experiments/replay.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/replay.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline::experiments {
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "csp/files/cfn_reader.h"
-#include "csp/input_error.h"
+#include "sightline/csp/files/cfn_reader.h"
+#include "sightline/csp/input_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

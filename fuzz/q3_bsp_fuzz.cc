@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <span>
 
-#include "csp/input_error.h"
-#include "domains/camera/level/q3_bsp.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
 
 namespace {
 

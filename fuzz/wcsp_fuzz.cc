@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "csp/files/wcsp_reader.h"
-#include "csp/input_error.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/input_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

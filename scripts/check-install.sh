@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The installed package as a user meets it: installs BUILD_DIR into a temporary prefix, checks
-# the runtime component's link interface and its shared library's dependencies, then
+# the runtime component's link interface and its shared library's dependencies, builds and
+# runs a researcher's program on the static components and the installed program, then
 # configures, builds and runs examples/embedding/ (C and C++) against the prefix, each from
 # its own folder, and judges the C example's trace with `sightline view` (the independent
 # visibility check and the unflagged-jump count). Run by ctest (test install_and_embed).
@@ -12,8 +13,10 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
 
-cmake --install "$build" --prefix "$prefix" >/dev/null
-echo "installed into $prefix"
+# Installed in one place and used from another: the package must be relocatable.
+cmake --install "$build" --prefix "$work/staging" >/dev/null
+mv "$work/staging" "$prefix"
+echo "installed, then moved to $prefix"
 
 cmake -S "$root/tests/install/link_interface" -B "$work/link" -DCMAKE_PREFIX_PATH="$prefix" \
   | grep "link interface"
@@ -21,6 +24,14 @@ needed="$(readelf -d "$prefix"/lib*/libsightline.so | grep NEEDED || true)"
 if grep -Eiq "assimp|libzip|mpi|boost_iostreams" <<<"$needed"; then
   echo "libsightline.so needs a file reader, importer or MPI:"; echo "$needed"; exit 1
 fi
+
+# Research code: the static components (csp, files, camera, suites) and their headers.
+cmake -S "$root/tests/install/research" -B "$work/research" -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/research" -j2 >/dev/null
+echo "--- tests/install/research"
+"$work/research/research_check" "$root/experiments/scenes/crammed-doorway.yaml"
+"$prefix/bin/sightline" solvers >/dev/null
 
 map="/usr/share/games/openarena/baseoa/pak6-patch088.pk3"
 for lang in c cpp; do

@@ -1,8 +1,8 @@
-#include "solvers/bnb.h"
+#include "sightline/solvers/bnb.h"
 
-#include "solvers/detail/bnb_search.h"
-#include "solvers/detail/bnb_soft_search.h"
-#include "solvers/detail/bnb_wcsp_view.h"
+#include "sightline/solvers/detail/bnb_search.h"
+#include "sightline/solvers/detail/bnb_soft_search.h"
+#include "sightline/solvers/detail/bnb_wcsp_view.h"
 
 namespace sightline::solvers {
 

@@ -1,12 +1,12 @@
 // The solvers of solvers/, registered by name. One line per solver.
-#include "solvers/registry.h"
-#include "solvers/bnb.h"
-#include "solvers/ceres_refine.h"
-#include "solvers/grid.h"
-#include "solvers/lns.h"
-#include "solvers/sliding_octree.h"
-#include "solvers/sls.h"
-#include "solvers/tabu.h"
+#include "sightline/solvers/registry.h"
+#include "sightline/solvers/bnb.h"
+#include "sightline/solvers/ceres_refine.h"
+#include "sightline/solvers/grid.h"
+#include "sightline/solvers/lns.h"
+#include "sightline/solvers/sliding_octree.h"
+#include "sightline/solvers/sls.h"
+#include "sightline/solvers/tabu.h"
 
 namespace sightline::solvers {
 

@@ -1,7 +1,7 @@
 // ceres-refine: the phases, the adapter of the objective (ceres_refine_objective.cc) to
 // Ceres, the back-off, the alternatives. This is the one translation unit of solvers/ that
 // includes Ceres.
-#include "solvers/ceres_refine.h"
+#include "sightline/solvers/ceres_refine.h"
 
 #include <ceres/first_order_function.h>
 #include <ceres/gradient_problem.h>

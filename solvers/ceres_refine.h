@@ -62,9 +62,9 @@
 #include <string>
 #include <vector>
 
-#include "solvers/ceres_refine_poll.h"
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/ceres_refine_poll.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

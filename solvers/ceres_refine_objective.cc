@@ -1,6 +1,6 @@
 // ceres-refine's objective in unbounded parameters (detail::RefinementObjective) and the
 // acceptance rules shared by its phases; no Ceres type here (ceres_refine.cc adapts it).
-#include "solvers/ceres_refine.h"
+#include "sightline/solvers/ceres_refine.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "solvers/ceres_refine_poll.h"
+#include "sightline/solvers/ceres_refine_poll.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
 
-#include "solvers/ceres_refine.h"
+#include "sightline/solvers/ceres_refine.h"
 
 namespace sightline::solvers::detail {
 

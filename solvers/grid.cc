@@ -1,9 +1,9 @@
-#include "solvers/grid.h"
+#include "sightline/solvers/grid.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "csp/incremental_evaluator.h"
+#include "sightline/csp/incremental_evaluator.h"
 
 namespace sightline::solvers {
 

@@ -1,13 +1,13 @@
-#include "solvers/lns.h"
+#include "sightline/solvers/lns.h"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "csp/incremental_evaluator.h"
-#include "solvers/detail/conditioned_problem.h"
-#include "solvers/detail/random.h"
-#include "solvers/detail/start.h"
-#include "solvers/registry.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/solvers/detail/conditioned_problem.h"
+#include "sightline/solvers/detail/random.h"
+#include "sightline/solvers/detail/start.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 

@@ -38,8 +38,8 @@
 #include <memory>
 #include <string>
 
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

@@ -1,4 +1,4 @@
-#include "solvers/options.h"
+#include "sightline/solvers/options.h"
 
 #include <cerrno>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "solvers/pipeline.h"
+#include "sightline/solvers/pipeline.h"
 
 namespace sightline::solvers {
 

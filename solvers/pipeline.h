@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-#include "solvers/solver.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

@@ -1,8 +1,8 @@
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 
 #include <stdexcept>
 
-#include "solvers/pipeline.h"
+#include "sightline/solvers/pipeline.h"
 
 namespace sightline::solvers {
 

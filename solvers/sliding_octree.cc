@@ -1,9 +1,9 @@
-#include "solvers/sliding_octree.h"
+#include "sightline/solvers/sliding_octree.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "solvers/detail/start.h"
+#include "sightline/solvers/detail/start.h"
 
 namespace sightline::solvers {
 

@@ -1,8 +1,8 @@
-#include "solvers/sls.h"
+#include "sightline/solvers/sls.h"
 
 #include <utility>
 
-#include "solvers/detail/sls_engines.h"
+#include "sightline/solvers/detail/sls_engines.h"
 
 namespace sightline::solvers {
 

@@ -56,8 +56,8 @@
 #include <string>
 #include <vector>
 
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

@@ -1,4 +1,4 @@
-#include "solvers/solver.h"
+#include "sightline/solvers/solver.h"
 
 #include <sstream>
 #include <utility>

@@ -1,8 +1,8 @@
-#include "solvers/tabu.h"
+#include "sightline/solvers/tabu.h"
 
 #include <algorithm>
 
-#include "solvers/detail/tabu_search.h"
+#include "sightline/solvers/detail/tabu_search.h"
 
 namespace sightline::solvers {
 

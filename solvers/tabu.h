@@ -57,8 +57,8 @@
 #include <memory>
 #include <string>
 
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

@@ -1,4 +1,4 @@
-#include "csp/files/cfn_reader.h"
+#include "sightline/csp/files/cfn_reader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "csp/files/compressed_text.h"
-#include "csp/input_error.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/files/compressed_text.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 namespace {

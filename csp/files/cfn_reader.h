@@ -31,7 +31,7 @@
 #include <string>
 #include <string_view>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

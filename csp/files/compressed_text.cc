@@ -1,4 +1,4 @@
-#include "csp/files/compressed_text.h"
+#include "sightline/csp/files/compressed_text.h"
 
 #include <boost/iostreams/filter/bzip2.hpp>
 #include <boost/iostreams/filter/gzip.hpp>
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::csp {
 

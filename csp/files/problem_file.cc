@@ -1,13 +1,13 @@
-#include "csp/files/problem_file.h"
+#include "sightline/csp/files/problem_file.h"
 
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
-#include "csp/constraint_kinds.h"
-#include "csp/files/yaml_spec.h"
-#include "csp/kinds/constraint_entry.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/csp/kinds/constraint_entry.h"
 
 namespace sightline::csp {
 namespace {

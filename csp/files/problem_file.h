@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/problem.h"
-#include "csp/spec.h"
+#include "sightline/csp/problem.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/files/wcsp_reader.h"
+#include "sightline/csp/files/wcsp_reader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -7,10 +7,10 @@
 #include <sstream>
 #include <string_view>
 
-#include "csp/files/compressed_text.h"
-#include "csp/input_error.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/files/compressed_text.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 namespace {

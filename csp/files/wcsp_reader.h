@@ -34,7 +34,7 @@
 #include <memory>
 #include <string>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

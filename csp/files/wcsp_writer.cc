@@ -1,4 +1,4 @@
-#include "csp/files/wcsp_writer.h"
+#include "sightline/csp/files/wcsp_writer.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 namespace {

@@ -14,7 +14,7 @@
 
 #include <ostream>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/files/yaml_spec.h"
+#include "sightline/csp/files/yaml_spec.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,8 +1,8 @@
-#include "csp/kinds/abs_deviation.h"
+#include "sightline/csp/kinds/abs_deviation.h"
 
 #include <cmath>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

@@ -9,9 +9,9 @@
 // File form: {kind: abs_deviation, scope: [x, y], coefficients: [1, -1], constant: 0, target: 2}
 #pragma once
 
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/linear_form.h"
-#include "csp/kinds/number_or_parameter.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/linear_form.h"
+#include "sightline/csp/kinds/number_or_parameter.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/kinds/all_different.h"
+#include "sightline/csp/kinds/all_different.h"
 
 #include <algorithm>
 #include <bit>
@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <unordered_map>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

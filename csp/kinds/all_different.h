@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
-#include "csp/constraint.h"
-#include "csp/constraint_kinds.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/csp/constraint_kinds.h"
 
 namespace sightline::csp {
 

@@ -1,11 +1,11 @@
 // Registration of the built-in constraint kinds: one line per kind.
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/abs_deviation.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/expression.h"
-#include "csp/kinds/linear.h"
-#include "csp/kinds/not_equal.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/abs_deviation.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/expression.h"
+#include "sightline/csp/kinds/linear.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 

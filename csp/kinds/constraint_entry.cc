@@ -1,4 +1,4 @@
-#include "csp/kinds/constraint_entry.h"
+#include "sightline/csp/kinds/constraint_entry.h"
 
 #include <stdexcept>
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/constraint_kinds.h"
-#include "csp/problem.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/kinds/expression.h"
+#include "sightline/csp/kinds/expression.h"
 
 #include <muParser.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

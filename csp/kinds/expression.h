@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/constraint_kinds.h"
-#include "csp/parameters.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/parameters.h"
 
 namespace sightline::csp {
 

@@ -1,9 +1,9 @@
-#include "csp/kinds/linear.h"
+#include "sightline/csp/kinds/linear.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 

@@ -10,9 +10,9 @@
 // (quote ">=": a bare > starts a folded block in YAML; `le`, `eq`, `ge` are accepted too).
 #pragma once
 
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/linear_form.h"
-#include "csp/kinds/number_or_parameter.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/linear_form.h"
+#include "sightline/csp/kinds/number_or_parameter.h"
 
 namespace sightline::csp {
 

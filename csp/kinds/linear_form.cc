@@ -1,12 +1,12 @@
-#include "csp/kinds/linear_form.h"
+#include "sightline/csp/kinds/linear_form.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "csp/problem.h"
-#include "csp/spec.h"
+#include "sightline/csp/problem.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::csp {
 namespace {

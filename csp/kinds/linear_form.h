@@ -16,8 +16,8 @@
 
 #include <vector>
 
-#include "csp/constraint.h"
-#include "csp/spec.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::csp {
 

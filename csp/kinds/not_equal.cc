@@ -1,4 +1,4 @@
-#include "csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/not_equal.h"
 
 #include <string>
 

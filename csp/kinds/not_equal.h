@@ -8,8 +8,8 @@
 // File form: {kind: not_equal, scope: [x, y], offset: 0}.
 #pragma once
 
-#include "csp/constraint.h"
-#include "csp/constraint_kinds.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/csp/constraint_kinds.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "csp/kinds/number_or_parameter.h"
+#include "sightline/csp/kinds/number_or_parameter.h"
 
 namespace sightline::csp {
 

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "csp/parameters.h"
-#include "csp/spec.h"
+#include "sightline/csp/parameters.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::csp {
 

@@ -1,11 +1,11 @@
-#include "csp/kinds/table.h"
+#include "sightline/csp/kinds/table.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 namespace {

@@ -43,8 +43,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "csp/constraint.h"
-#include "csp/constraint_kinds.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/csp/constraint_kinds.h"
 
 namespace sightline::csp {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/area_profile_switch.h"
+#include "sightline/domains/camera/area_profile_switch.h"
 
 #include <algorithm>
 

@@ -22,9 +22,9 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "domains/camera/profile.h"
-#include "domains/camera/scene_at_time.h"
-#include "domains/camera/space_sensor.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/space_sensor.h"
 
 namespace sightline::camera {
 

@@ -1,14 +1,14 @@
-#include "domains/camera/camera_problem.h"
+#include "sightline/domains/camera/camera_problem.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/constraint_entry.h"
-#include "domains/camera/constraints/clearance.h"
-#include "domains/camera/constraints/future_visibility.h"
-#include "domains/camera/constraints/occlusion.h"
-#include "domains/camera/constraints/smooth_constraints.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_entry.h"
+#include "sightline/domains/camera/constraints/clearance.h"
+#include "sightline/domains/camera/constraints/future_visibility.h"
+#include "sightline/domains/camera/constraints/occlusion.h"
+#include "sightline/domains/camera/constraints/smooth_constraints.h"
 
 namespace sightline::camera {
 

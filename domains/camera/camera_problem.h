@@ -30,14 +30,14 @@
 #include <optional>
 #include <vector>
 
-#include "csp/problem.h"
-#include "domains/camera/area_profile_switch.h"
-#include "domains/camera/constraints/frame_parameters.h"
-#include "domains/camera/motion_prediction.h"
-#include "domains/camera/nearby_boxes.h"
-#include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/area_profile_switch.h"
+#include "sightline/domains/camera/constraints/frame_parameters.h"
+#include "sightline/domains/camera/motion_prediction.h"
+#include "sightline/domains/camera/nearby_boxes.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/motion_prediction.h"
+#include "sightline/domains/camera/motion_prediction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +89,7 @@ void MotionPrediction::predict_motion(const CharacterState& character) {
       tau += h;
       v = turned(v, turn_rate_ * h);
       const Eigen::Vector3d step = v * h;
-      const auto hit = scene_->first_hit(p, p + step);
+      const auto hit = scene_->surface_hit(p, p + step, character.t);
       if (!hit) {
         p += step;
         continue;
@@ -107,7 +107,7 @@ void MotionPrediction::predict_motion(const CharacterState& character) {
       v -= v.dot(n) * n;
       p = at_wall;
       if (slide.squaredNorm() == 0) continue;
-      if (const auto again = scene_->first_hit(p, p + slide)) {
+      if (const auto again = scene_->surface_hit(p, p + slide, character.t)) {
         p = short_of(p, slide, again->t, kWallMargin);
         v.setZero();  // a corner: the forecast stops there
       } else {

@@ -32,10 +32,10 @@
 #include <memory>
 #include <vector>
 
-#include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
-#include "domains/camera/scene_at_time.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
 

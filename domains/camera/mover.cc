@@ -1,4 +1,4 @@
-#include "domains/camera/mover.h"
+#include "sightline/domains/camera/mover.h"
 
 #include <algorithm>
 #include <cmath>

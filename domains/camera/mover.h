@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/input_error.h"
-#include "domains/camera/geometry/aabb.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/geometry/aabb.h"
 
 namespace sightline::camera {
 

@@ -1,9 +1,9 @@
-#include "domains/camera/nearby_boxes.h"
+#include "sightline/domains/camera/nearby_boxes.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 

@@ -24,8 +24,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "domains/camera/geometry/aabb.h"
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 

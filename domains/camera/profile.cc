@@ -1,4 +1,4 @@
-#include "domains/camera/profile.h"
+#include "sightline/domains/camera/profile.h"
 
 #include <cmath>
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/spec.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/csp/spec.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
 

@@ -1,12 +1,12 @@
-#include "domains/camera/profile_file.h"
+#include "sightline/domains/camera/profile_file.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/profile_presets.h"
-#include "domains/camera/spec_reading.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/profile_presets.h"
+#include "sightline/domains/camera/spec_reading.h"
 
 namespace sightline::camera {
 namespace {

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "csp/spec.h"
-#include "domains/camera/profile.h"
+#include "sightline/csp/spec.h"
+#include "sightline/domains/camera/profile.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/profile_text.h"
+#include "sightline/domains/camera/profile_text.h"
 
 #include <algorithm>
 #include <charconv>

@@ -17,7 +17,7 @@
 
 #include <string>
 
-#include "domains/camera/profile.h"
+#include "sightline/domains/camera/profile.h"
 
 namespace sightline::camera {
 

@@ -1,9 +1,9 @@
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/scene.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "domains/camera/constraints/clearance.h"
+#include "sightline/domains/camera/constraints/clearance.h"
 
 namespace sightline::camera {
 namespace {
@@ -65,6 +65,18 @@ std::optional<SurfaceHit> Scene::first_hit(const Eigen::Vector3d& a,
     best = hit;
   }
   return best;
+}
+
+std::optional<SurfaceHit> Scene::surface_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                             double t) const {
+  if (!world_) return first_hit(a, b);
+  const auto hit = world_->first_hit({a.x(), a.y(), a.z()}, {b.x(), b.y(), b.z()}, t);
+  if (!hit) return std::nullopt;
+  SurfaceHit h;
+  h.t = std::clamp(hit->fraction, 0.0, 1.0);
+  h.source = SurfaceHit::Source::kBox;
+  h.normal = Eigen::Vector3d(hit->normal.x, hit->normal.y, hit->normal.z);
+  return h;
 }
 
 std::optional<NearestSurface> Scene::nearest_surface(const Eigen::Vector3d& p,

@@ -28,14 +28,14 @@
 #include <string>
 #include <vector>
 
-#include "csp/input_error.h"
-#include "domains/camera/geometry/aabb.h"
-#include "domains/camera/geometry/box_tree.h"
-#include "domains/camera/geometry/triangle_index.h"
-#include "domains/camera/level/level.h"
-#include "domains/camera/mover.h"
-#include "domains/camera/profile.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/level/level.h"
+#include "sightline/domains/camera/mover.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/trajectory.h"
 #include "sightline/world.h"
 
 namespace sightline::camera {
@@ -152,6 +152,10 @@ class Scene {
   }
   // The first solid surface along the segment from a to b (boxes and level triangles).
   std::optional<SurfaceHit> first_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  // The same, from the scene's world at time t when it has one (world(): a world hit is
+  // reported as a box, index 0), for the questions about walls rather than movers.
+  std::optional<SurfaceHit> surface_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                        double t) const;
   // Signed distance from p to the nearest solid surface (< 0 inside a box or inside the
   // level's solid volume). Distances of `limit` or more are reported as `limit` (infinity
   // with no geometry): a clearance test only needs to know whether something is nearer than

@@ -1,10 +1,10 @@
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "domains/camera/constraints/clearance.h"
-#include "domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/constraints/clearance.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 
@@ -17,18 +17,6 @@ Eigen::Vector3d to_eigen(const sightline::Vec3& v) { return {v.x, v.y, v.z}; }
 
 bool SceneAtTime::world_line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
   return world_->line_of_sight(to_vec3(a), to_vec3(b), time_);
-}
-
-std::optional<SurfaceHit> SceneAtTime::world_first_hit(const Eigen::Vector3d& a,
-                                                       const Eigen::Vector3d& b) const {
-  const std::optional<sightline::WorldHit> hit = world_->first_hit(to_vec3(a), to_vec3(b), time_);
-  if (!hit) return std::nullopt;
-  SurfaceHit h;
-  h.t = std::clamp(hit->fraction, 0.0, 1.0);
-  h.source = SurfaceHit::Source::kBox;
-  h.index = 0;
-  h.normal = to_eigen(hit->normal);
-  return h;
 }
 
 std::optional<NearestSurface> SceneAtTime::world_nearest_surface(const Eigen::Vector3d& p,
@@ -156,7 +144,7 @@ std::uint32_t SceneAtTime::lines_of_sight(const Eigen::Vector3d& a,
 
 std::optional<SurfaceHit> SceneAtTime::first_hit(const Eigen::Vector3d& a,
                                                  const Eigen::Vector3d& b) const {
-  std::optional<SurfaceHit> best = world_ ? world_first_hit(a, b) : scene_->first_hit(a, b);
+  std::optional<SurfaceHit> best = scene_->surface_hit(a, b, time_);
   if (boxes_.empty()) return best;
   const Eigen::Vector3d delta = b - a;
   SegmentClip clip;

@@ -29,9 +29,9 @@
 #include <span>
 #include <vector>
 
-#include "domains/camera/geometry/aabb.h"
-#include "domains/camera/nearby_boxes.h"
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/nearby_boxes.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 
@@ -107,11 +107,9 @@ class SceneAtTime {
     return nearby_ && nearby_->covers(a, b) ? nearby_->segment_blocked(a, b)
                                             : scene_->solid_tree().segment_blocked(a, b);
   }
-  // The scene's world (Scene::world()) at time_: its answers, with SurfaceHit's and
-  // NearestSurface's meaning (a world hit is reported as a box, index 0).
+  // The scene's world (Scene::world()) at time_: its answers, with NearestSurface's meaning
+  // (first_hit asks Scene::surface_hit).
   bool world_line_of_sight(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
-  std::optional<SurfaceHit> world_first_hit(const Eigen::Vector3d& a,
-                                            const Eigen::Vector3d& b) const;
   std::optional<NearestSurface> world_nearest_surface(const Eigen::Vector3d& p,
                                                       double limit) const;
   // Sorts the movers into groups and computes bounds_ and the groups' bounds.

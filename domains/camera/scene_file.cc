@@ -1,14 +1,14 @@
-#include "domains/camera/scene_file.h"
+#include "sightline/domains/camera/scene_file.h"
 
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/spec_reading.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/spec_reading.h"
 
 namespace sightline::camera {
 namespace {

@@ -14,8 +14,8 @@
 
 #include <string>
 
-#include "csp/spec.h"
-#include "domains/camera/scene.h"
+#include "sightline/csp/spec.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/space_sensor.h"
+#include "sightline/domains/camera/space_sensor.h"
 
 #include <algorithm>
 #include <cmath>

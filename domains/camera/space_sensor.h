@@ -24,9 +24,9 @@
 
 #include <Eigen/Core>
 
-#include "domains/camera/profile.h"
-#include "domains/camera/scene_at_time.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "csp/spec.h"
+#include "sightline/csp/spec.h"
 
 namespace sightline::camera::detail {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/trajectory.h"
+#include "sightline/domains/camera/trajectory.h"
 
 #include <algorithm>
 #include <cassert>

@@ -1,12 +1,12 @@
-#include "domains/colouring/colouring_problem.h"
+#include "sightline/domains/colouring/colouring_problem.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#include "csp/input_error.h"
-#include "csp/kinds/not_equal.h"
-#include "domains/colouring/dimacs_reader.h"
-#include "domains/colouring/yaml_graph.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/domains/colouring/dimacs_reader.h"
+#include "sightline/domains/colouring/yaml_graph.h"
 
 namespace sightline::colouring {
 

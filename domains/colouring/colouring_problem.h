@@ -10,8 +10,8 @@
 
 #include <memory>
 
-#include "csp/problem.h"
-#include "domains/colouring/graph.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/colouring/graph.h"
 
 namespace sightline::colouring {
 

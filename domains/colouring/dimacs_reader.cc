@@ -1,4 +1,4 @@
-#include "domains/colouring/dimacs_reader.h"
+#include "sightline/domains/colouring/dimacs_reader.h"
 
 #include <charconv>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::colouring {
 namespace {

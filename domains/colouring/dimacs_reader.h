@@ -14,7 +14,7 @@
 #include <istream>
 #include <string>
 
-#include "domains/colouring/graph.h"
+#include "sightline/domains/colouring/graph.h"
 
 namespace sightline::colouring {
 

@@ -1,4 +1,4 @@
-#include "domains/colouring/graph.h"
+#include "sightline/domains/colouring/graph.h"
 
 #include <stdexcept>
 

@@ -1,8 +1,8 @@
-#include "domains/colouring/yaml_graph.h"
+#include "sightline/domains/colouring/yaml_graph.h"
 
 #include <filesystem>
 
-#include "csp/files/yaml_spec.h"
+#include "sightline/csp/files/yaml_spec.h"
 
 namespace sightline::colouring {
 

@@ -13,8 +13,8 @@
 
 #include <string>
 
-#include "csp/spec.h"
-#include "domains/colouring/graph.h"
+#include "sightline/csp/spec.h"
+#include "sightline/domains/colouring/graph.h"
 
 namespace sightline::colouring {
 

@@ -1,11 +1,11 @@
-#include "domains/nqueens/nqueens.h"
+#include "sightline/domains/nqueens/nqueens.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "csp/kinds/all_different.h"
+#include "sightline/csp/kinds/all_different.h"
 
 namespace sightline::nqueens {
 

@@ -14,7 +14,7 @@
 #include <memory>
 #include <span>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::nqueens {
 

@@ -95,6 +95,10 @@ class Camera {
   // last update. Throws sightline::Error on NaN, a wrong count or dt <= 0, and passes on what
   // the world throws; the camera is unchanged then.
   const CameraPose& update(std::span<const PersonState> people, double dt);
+  // The same at the game's clock `t` (seconds, > time()), for a game that keeps one: the
+  // camera's clock becomes t exactly rather than the sum of the dt's, and dt stays the time
+  // step its motion limits use.
+  const CameraPose& update(std::span<const PersonState> people, double dt, double t);
   // Puts the camera at `position`, at rest (a respawn, a scripted cut).
   void reset(const Vec3& position);
   const CameraPose& pose() const;

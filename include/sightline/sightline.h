@@ -143,6 +143,10 @@ sl_status sl_camera_create(sl_world* world, const sl_camera_settings* settings,
  * is left as it was and the camera keeps its last good pose. */
 sl_status sl_camera_update(sl_camera* camera, const sl_person_state* people, size_t count,
                            double dt, sl_pose* out);
+/* The same at the game's clock t (> the last update's time): the camera's clock becomes t
+ * exactly rather than the sum of the dt's. */
+sl_status sl_camera_update_at(sl_camera* camera, const sl_person_state* people, size_t count,
+                              double dt, double t, sl_pose* out);
 /* Puts the camera at `position`, at rest. */
 sl_status sl_camera_reset(sl_camera* camera, sl_vec3 position);
 /* NULL is ignored. */

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::solvers::detail {
 

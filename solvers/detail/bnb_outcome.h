@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <sstream>
 
-#include "solvers/solver.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,5 +1,5 @@
-#include "solvers/detail/bnb_search.h"
-#include "solvers/detail/bnb_outcome.h"
+#include "sightline/solvers/detail/bnb_search.h"
+#include "sightline/solvers/detail/bnb_outcome.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "csp/problem.h"
-#include "solvers/solver.h"
+#include "sightline/csp/problem.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,4 +1,4 @@
-#include "solvers/detail/bnb_soft_arc.h"
+#include "sightline/solvers/detail/bnb_soft_arc.h"
 
 #include <algorithm>
 #include <cmath>

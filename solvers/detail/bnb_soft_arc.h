@@ -40,7 +40,7 @@
 #include <functional>
 #include <vector>
 
-#include "solvers/detail/bnb_wcsp_view.h"
+#include "sightline/solvers/detail/bnb_wcsp_view.h"
 
 namespace sightline::solvers::detail {
 

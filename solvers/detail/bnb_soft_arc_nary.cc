@@ -4,7 +4,7 @@
 // from the pair consistency, which never looks at these constraints.
 #include <cmath>
 
-#include "solvers/detail/bnb_soft_arc.h"
+#include "sightline/solvers/detail/bnb_soft_arc.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,5 +1,5 @@
-#include "solvers/detail/bnb_soft_search.h"
-#include "solvers/detail/bnb_outcome.h"
+#include "sightline/solvers/detail/bnb_soft_search.h"
+#include "sightline/solvers/detail/bnb_outcome.h"
 
 #include <cmath>
 #include <sstream>

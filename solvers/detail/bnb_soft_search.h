@@ -19,10 +19,10 @@
 #include <span>
 #include <vector>
 
-#include "csp/problem.h"
-#include "solvers/detail/bnb_soft_arc.h"
-#include "solvers/detail/bnb_wcsp_view.h"
-#include "solvers/solver.h"
+#include "sightline/csp/problem.h"
+#include "sightline/solvers/detail/bnb_soft_arc.h"
+#include "sightline/solvers/detail/bnb_wcsp_view.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,12 +1,12 @@
-#include "solvers/detail/bnb_wcsp_view.h"
+#include "sightline/solvers/detail/bnb_wcsp_view.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
 
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::solvers::detail {
 

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::solvers::detail {
 

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "csp/incremental_evaluator.h"
+#include "sightline/csp/incremental_evaluator.h"
 
 namespace sightline::solvers::detail {
 

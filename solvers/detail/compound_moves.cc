@@ -1,4 +1,4 @@
-#include "solvers/detail/compound_moves.h"
+#include "sightline/solvers/detail/compound_moves.h"
 
 #include <algorithm>
 #include <unordered_map>

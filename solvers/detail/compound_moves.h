@@ -36,8 +36,8 @@
 #include <span>
 #include <vector>
 
-#include "csp/problem.h"
-#include "solvers/detail/move_table.h"
+#include "sightline/csp/problem.h"
+#include "sightline/solvers/detail/move_table.h"
 
 namespace sightline::solvers::detail {
 

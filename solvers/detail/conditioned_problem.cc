@@ -1,4 +1,4 @@
-#include "solvers/detail/conditioned_problem.h"
+#include "sightline/solvers/detail/conditioned_problem.h"
 
 #include <string>
 

@@ -1,12 +1,12 @@
-#include "solvers/detail/discrete_search.h"
+#include "sightline/solvers/detail/discrete_search.h"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 
-#include "solvers/detail/group_placement.h"
-#include "solvers/detail/sls_engines.h"
-#include "solvers/detail/start.h"
+#include "sightline/solvers/detail/group_placement.h"
+#include "sightline/solvers/detail/sls_engines.h"
+#include "sightline/solvers/detail/start.h"
 
 namespace sightline::solvers::detail {
 

@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "csp/incremental_evaluator.h"
-#include "solvers/detail/best_keeper.h"
-#include "solvers/detail/breakout_weights.h"
-#include "solvers/detail/permutation_groups.h"
-#include "solvers/detail/random.h"
-#include "solvers/detail/zeroed_array.h"
-#include "solvers/sls.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/solvers/detail/best_keeper.h"
+#include "sightline/solvers/detail/breakout_weights.h"
+#include "sightline/solvers/detail/permutation_groups.h"
+#include "sightline/solvers/detail/random.h"
+#include "sightline/solvers/detail/zeroed_array.h"
+#include "sightline/solvers/sls.h"
 
 namespace sightline::solvers::detail {
 

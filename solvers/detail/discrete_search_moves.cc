@@ -3,7 +3,7 @@
 // groups). See discrete_search.h.
 #include <algorithm>
 
-#include "solvers/detail/discrete_search.h"
+#include "sightline/solvers/detail/discrete_search.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,4 +1,4 @@
-#include "solvers/detail/group_placement.h"
+#include "sightline/solvers/detail/group_placement.h"
 
 #include <algorithm>
 #include <array>

@@ -17,9 +17,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "csp/incremental_evaluator.h"
-#include "solvers/detail/permutation_groups.h"
-#include "solvers/detail/random.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/solvers/detail/permutation_groups.h"
+#include "sightline/solvers/detail/random.h"
 
 namespace sightline::solvers::detail {
 

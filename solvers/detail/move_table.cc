@@ -1,4 +1,4 @@
-#include "solvers/detail/move_table.h"
+#include "sightline/solvers/detail/move_table.h"
 
 namespace sightline::solvers::detail {
 

@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,8 +1,8 @@
-#include "solvers/detail/permutation_groups.h"
+#include "sightline/solvers/detail/permutation_groups.h"
 
 #include <algorithm>
 
-#include "csp/kinds/all_different.h"
+#include "sightline/csp/kinds/all_different.h"
 
 namespace sightline::solvers::detail {
 

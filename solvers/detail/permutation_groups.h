@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::solvers::detail {
 

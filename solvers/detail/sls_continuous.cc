@@ -3,9 +3,9 @@
 #include <cmath>
 #include <string>
 
-#include "solvers/detail/random.h"
-#include "solvers/detail/sls_engines.h"
-#include "solvers/detail/start.h"
+#include "sightline/solvers/detail/random.h"
+#include "sightline/solvers/detail/sls_engines.h"
+#include "sightline/solvers/detail/start.h"
 
 namespace sightline::solvers::detail {
 

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "solvers/sls.h"
+#include "sightline/solvers/sls.h"
 
 namespace sightline::solvers::detail {
 

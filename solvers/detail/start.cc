@@ -1,4 +1,4 @@
-#include "solvers/detail/start.h"
+#include "sightline/solvers/detail/start.h"
 
 #include <stdexcept>
 #include <string>

@@ -8,7 +8,7 @@
 
 #include <span>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,4 +1,4 @@
-#include "solvers/detail/tabu_search.h"
+#include "sightline/solvers/detail/tabu_search.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "solvers/detail/compound_moves.h"
-#include "solvers/detail/move_table.h"
-#include "solvers/detail/random.h"
-#include "solvers/detail/start.h"
+#include "sightline/solvers/detail/compound_moves.h"
+#include "sightline/solvers/detail/move_table.h"
+#include "sightline/solvers/detail/random.h"
+#include "sightline/solvers/detail/start.h"
 
 namespace sightline::solvers::detail {
 

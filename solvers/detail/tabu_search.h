@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <span>
 
-#include "solvers/tabu.h"
+#include "sightline/solvers/tabu.h"
 
 namespace sightline::solvers::detail {
 

@@ -1,4 +1,4 @@
-#include "solvers/toulbar2/toulbar2_solver.h"
+#include "sightline/solvers/toulbar2/toulbar2_solver.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -19,8 +19,8 @@
 #include <thread>
 #include <vector>
 
-#include "csp/files/wcsp_writer.h"
-#include "solvers/detail/start.h"
+#include "sightline/csp/files/wcsp_writer.h"
+#include "sightline/solvers/detail/start.h"
 
 extern char** environ;
 

@@ -27,9 +27,9 @@
 #include <optional>
 #include <string>
 
-#include "solvers/options.h"
-#include "solvers/registry.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/registry.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::solvers {
 

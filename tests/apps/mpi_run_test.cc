@@ -20,8 +20,8 @@
 #include <sstream>
 #include <string>
 
-#include "experiments/suite.h"
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/suite.h"
+#include "sightline/experiments/suite_runner.h"
 #include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 

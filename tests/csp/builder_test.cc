@@ -1,11 +1,11 @@
-#include "csp/builder.h"
+#include "sightline/csp/builder.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "csp/files/problem_file.h"
-#include "csp/kinds/not_equal.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/kinds/not_equal.h"
 #include "incremental_check.h"
 
 namespace sightline::csp {

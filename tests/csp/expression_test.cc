@@ -1,12 +1,12 @@
 // The `expression` kind: muparser formulas as constraints.
-#include "csp/kinds/expression.h"
+#include "sightline/csp/kinds/expression.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "csp/builder.h"
-#include "csp/files/problem_file.h"
+#include "sightline/csp/builder.h"
+#include "sightline/csp/files/problem_file.h"
 #include "incremental_check.h"
 
 namespace sightline::csp {

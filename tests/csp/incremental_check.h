@@ -10,8 +10,8 @@
 #include <cmath>
 #include <random>
 
-#include "csp/incremental_evaluator.h"
-#include "csp/problem.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp::testing {
 

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <random>
 
-#include "csp/builder.h"
-#include "csp/constraint_kinds.h"
-#include "csp/kinds/abs_deviation.h"
-#include "csp/kinds/linear.h"
-#include "csp/kinds/not_equal.h"
+#include "sightline/csp/builder.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/abs_deviation.h"
+#include "sightline/csp/kinds/linear.h"
+#include "sightline/csp/kinds/not_equal.h"
 #include "incremental_check.h"
 
 namespace sightline::csp {

@@ -1,6 +1,6 @@
 // Problem files: what they build, every kind of mistake reported with file and line, and
 // the example files' documented optima confirmed by brute force.
-#include "csp/files/problem_file.h"
+#include "sightline/csp/files/problem_file.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <functional>
 
-#include "csp/incremental_evaluator.h"
+#include "sightline/csp/incremental_evaluator.h"
 
 namespace sightline::csp {
 namespace {

@@ -1,4 +1,4 @@
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <random>
 #include <stdexcept>
 
-#include "csp/kinds/abs_deviation.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/linear.h"
-#include "csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/abs_deviation.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/linear.h"
+#include "sightline/csp/kinds/not_equal.h"
 #include "incremental_check.h"
 
 namespace sightline::csp {

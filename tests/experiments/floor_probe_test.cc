@@ -1,6 +1,6 @@
 // FloorProbe against brute force written here (signed volumes over every triangle): random
 // triangle soups of small and large triangles, random segments and vertical rays.
-#include "experiments/floor_probe.h"
+#include "sightline/experiments/floor_probe.h"
 
 #include <gtest/gtest.h>
 

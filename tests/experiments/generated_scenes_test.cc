@@ -2,8 +2,8 @@
 // Judged by the run metrics, which use the independent brute-force checks.
 #include <gtest/gtest.h>
 
-#include "experiments/camera_run.h"
-#include "experiments/scene_generator.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/scene_generator.h"
 
 namespace sightline::experiments {
 namespace {

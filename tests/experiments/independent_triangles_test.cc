@@ -1,7 +1,7 @@
 // The independent triangle check: its grid must never change an answer, so every query is
 // compared with a loop over all triangles (the same exact predicates, no grid), on random
 // soups; and the predicates themselves on hand-made cases with known answers.
-#include "experiments/independent_triangles.h"
+#include "sightline/experiments/independent_triangles.h"
 
 #include <gtest/gtest.h>
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/level/level.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/level_walk.h"
-#include "experiments/spawn_points.h"
+#include "sightline/domains/camera/level/level.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/level_walk.h"
+#include "sightline/experiments/spawn_points.h"
 
 namespace sightline::experiments {
 namespace {

@@ -3,7 +3,7 @@
 // headroom, and no leg may pass through a surface at knee (0.5 m) or chest (1.3 m) height.
 // Those checks are brute force over every triangle, written here with signed volumes (not
 // the generator's probe, not Recast, not Embree).
-#include "experiments/level_walk.h"
+#include "sightline/experiments/level_walk.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <filesystem>
 #include <string>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/level/level.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/spawn_points.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/level/level.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/spawn_points.h"
 
 namespace sightline::experiments {
 namespace {

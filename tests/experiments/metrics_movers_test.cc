@@ -9,9 +9,9 @@
 #include <fstream>
 #include <random>
 
-#include "csp/input_error.h"
-#include "domains/camera/mover.h"
-#include "experiments/metrics.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/mover.h"
+#include "sightline/experiments/metrics.h"
 
 namespace sightline::experiments {
 namespace {

@@ -1,6 +1,6 @@
 // Metrics on hand-made traces whose answers are known, and the independent checks against
 // hand-worked geometry.
-#include "experiments/metrics.h"
+#include "sightline/experiments/metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene_file.h"
-#include "experiments/independent_check.h"
-#include "experiments/scene_files.h"
-#include "experiments/scene_generator.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/scene_generator.h"
 
 namespace sightline::experiments {
 namespace {

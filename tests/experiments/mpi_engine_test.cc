@@ -3,7 +3,7 @@
 // Rank 0's final reading of the folder waits for runs a worker reported but the file system
 // does not show yet (NFS). The engine itself is tested end to end under mpirun
 // (tests/apps/mpi_run_test.cc).
-#include "experiments/mpi_engine.h"
+#include "sightline/experiments/mpi_engine.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // (here, with a decoder of the test's own) to exactly the trace's and scene's numbers, that
 // three.js is inlined or its absence reported, that sizes grow linearly with frames, and the
 // assets-beside mode. What the page does in a browser is checked by the view's browser script.
-#include "experiments/replay.h"
+#include "sightline/experiments/replay.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The report's movers (experiments/report_movers.h): which times a view marks, and that a
 // marked mover is drawn where its keyframes put it then, and only when near the character.
-#include "experiments/report_movers.h"
+#include "sightline/experiments/report_movers.h"
 
 #include <gtest/gtest.h>
 

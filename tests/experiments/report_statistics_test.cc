@@ -1,7 +1,7 @@
 // The report's cactus plot and performance profile: well-formed SVG (tags balanced, one root),
 // one polyline per solver with every point inside the viewBox, step curves that only rise,
 // the log time axis when times span decades, and the section in a problem suite's report.
-#include "experiments/report_statistics.h"
+#include "sightline/experiments/report_statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/report.h"
+#include "sightline/experiments/report.h"
 
 namespace sightline::experiments {
 namespace {

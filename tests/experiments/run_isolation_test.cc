@@ -16,11 +16,11 @@
 #include <map>
 #include <sstream>
 
-#include "csp/kinds/not_equal.h"
-#include "domains/nqueens/nqueens.h"
-#include "experiments/isolated_run.h"
-#include "experiments/output_manifest.h"
-#include "experiments/suite_runner.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/domains/nqueens/nqueens.h"
+#include "sightline/experiments/isolated_run.h"
+#include "sightline/experiments/output_manifest.h"
+#include "sightline/experiments/suite_runner.h"
 #include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 

@@ -1,7 +1,7 @@
 // RunOrder: the MPI dispatcher's longest-expected-first order (experiments/run_order.h):
 // bigger problems, slower solvers and longer scenes first; equal guesses in suite order;
 // a toy run never expected to outlast the suite's time limit.
-#include "experiments/run_order.h"
+#include "sightline/experiments/run_order.h"
 
 #include <gtest/gtest.h>
 

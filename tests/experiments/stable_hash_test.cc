@@ -1,4 +1,4 @@
-#include "experiments/stable_hash.h"
+#include "sightline/experiments/stable_hash.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Statistics for suites against answers worked out by hand (in the comments), closed forms
 // (chi-square with 2 degrees of freedom has survival exp(-x/2)) and brute force written here
 // (the Wilcoxon null distribution by enumerating every sign pattern).
-#include "experiments/statistics.h"
+#include "sightline/experiments/statistics.h"
 
 #include <gtest/gtest.h>
 

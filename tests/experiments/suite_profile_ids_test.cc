@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/profile.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/profile_text.h"
-#include "experiments/suite.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/profile_text.h"
+#include "sightline/experiments/suite.h"
 #include "tests/experiments/suite_test_files.h"
 
 namespace sightline::experiments {

@@ -2,7 +2,7 @@
 // results with answers worked out in the comments, the Wilcoxon comparison end to end on a
 // small colouring suite (against the test computed here from results.csv), and the checks
 // on the names a comparison gives.
-#include "experiments/suite_ranking.h"
+#include "sightline/experiments/suite_ranking.h"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 #include <tuple>
 #include <vector>
 
-#include "experiments/statistics.h"
-#include "experiments/suite_statistics.h"
+#include "sightline/experiments/statistics.h"
+#include "sightline/experiments/suite_statistics.h"
 #include "tests/experiments/suite_test_files.h"
 
 namespace sightline::experiments {

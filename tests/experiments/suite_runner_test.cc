@@ -1,7 +1,7 @@
 // The suite runner: resumes without redoing finished runs, never takes a half-written result
 // for a finished one, produces the same results.csv as an uninterrupted run, and writes a
 // self-contained report.
-#include "experiments/suite_runner.h"
+#include "sightline/experiments/suite_runner.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "experiments/report.h"
+#include "sightline/experiments/report.h"
 #include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 

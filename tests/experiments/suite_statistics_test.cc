@@ -1,5 +1,5 @@
 // The suite's statistics sections and stats.csv on a hand-made outcome with known answers.
-#include "experiments/suite_statistics.h"
+#include "sightline/experiments/suite_statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/statistics.h"
+#include "sightline/experiments/statistics.h"
 
 namespace sightline::experiments {
 namespace {

@@ -1,6 +1,6 @@
 // Suite files: what they expand into, and the errors a bad one gets (file:line, and what
 // was expected or which names are valid).
-#include "experiments/suite.h"
+#include "sightline/experiments/suite.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

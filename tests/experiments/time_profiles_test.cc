@@ -1,13 +1,13 @@
 // Solved against time on hand-made problem runs: what counts as solved, cactus.csv and
 // profiles.csv with contents worked out in the comments, and the files beside stats.csv.
-#include "experiments/time_profiles.h"
+#include "sightline/experiments/time_profiles.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "experiments/suite_statistics.h"
+#include "sightline/experiments/suite_statistics.h"
 
 namespace sightline::experiments {
 namespace {

@@ -1,7 +1,7 @@
 // The trace reader (trace.h) on traces written by hand, as another tool would write them:
 // what FORMATS.md allows is read, and every malformed input is an InputError naming the
 // file, the line and the column at fault.
-#include "experiments/trace.h"
+#include "sightline/experiments/trace.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::experiments {
 namespace {

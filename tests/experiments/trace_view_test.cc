@@ -1,15 +1,15 @@
 // TraceView's pieces (trace_view.h) on a scene built here: the match between a trace and its
 // scene at the edge of its tolerances, the hidden frames against segments worked out by hand,
 // and run ids from file names.
-#include "experiments/trace_view.h"
+#include "sightline/experiments/trace_view.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "csp/input_error.h"
-#include "experiments/camera_run.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/experiments/camera_run.h"
 
 namespace sightline::experiments {
 namespace {

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

@@ -5,9 +5,9 @@
 
 #include <random>
 
-#include "solvers/ceres_refine.h"
-#include "solvers/ceres_refine_poll.h"
-#include "solvers/pipeline.h"
+#include "sightline/solvers/ceres_refine.h"
+#include "sightline/solvers/ceres_refine_poll.h"
+#include "sightline/solvers/pipeline.h"
 #include "tests/solvers/ceres_refine_test_problems.h"
 
 namespace sightline::solvers {

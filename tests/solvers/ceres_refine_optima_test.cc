@@ -6,9 +6,9 @@
 
 #include <random>
 
-#include "csp/files/problem_file.h"
-#include "csp/kinds/expression.h"
-#include "solvers/ceres_refine.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/kinds/expression.h"
+#include "sightline/solvers/ceres_refine.h"
 #include "tests/solvers/ceres_refine_test_problems.h"
 
 namespace sightline::solvers {

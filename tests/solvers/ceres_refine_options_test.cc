@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "solvers/ceres_refine.h"
+#include "sightline/solvers/ceres_refine.h"
 #include "tests/solvers/ceres_refine_test_problems.h"
 
 namespace sightline::solvers {

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "csp/kinds/abs_deviation.h"
-#include "csp/kinds/linear.h"
-#include "csp/problem.h"
-#include "solvers/ceres_refine.h"
-#include "solvers/registry.h"
+#include "sightline/csp/kinds/abs_deviation.h"
+#include "sightline/csp/kinds/linear.h"
+#include "sightline/csp/problem.h"
+#include "sightline/solvers/ceres_refine.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers::ceres_refine_testing {
 

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <random>
 
-#include "csp/files/wcsp_reader.h"
-#include "csp/kinds/table.h"
-#include "solvers/detail/compound_moves.h"
-#include "solvers/detail/move_table.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/solvers/detail/compound_moves.h"
+#include "sightline/solvers/detail/move_table.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

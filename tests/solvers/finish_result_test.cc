@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "solvers/sls.h"
-#include "solvers/solver.h"
+#include "sightline/solvers/sls.h"
+#include "sightline/solvers/solver.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

@@ -1,13 +1,13 @@
 // Tests of the grid solver: against brute-force enumeration written independently here,
 // the lattice's endpoints, mixed problems, exact tie counts, the size guard and the limits.
-#include "solvers/grid.h"
+#include "sightline/solvers/grid.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

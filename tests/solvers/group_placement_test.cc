@@ -3,7 +3,7 @@
 // (checked pair by pair, independently of the counts), the values stay a permutation of
 // the pool, the evaluator's running score equals a full evaluation afterwards, groups whose
 // constraints cannot retract are refused, and sls solves with and without placement.
-#include "solvers/detail/group_placement.h"
+#include "sightline/solvers/detail/group_placement.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <cmath>
 #include <memory>
 
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
-#include "solvers/registry.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

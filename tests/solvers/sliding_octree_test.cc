@@ -1,7 +1,7 @@
 // Tests of the sliding octree: the exact candidates of table 8 (child centres, shrinking,
 // sliding), 2^d children per pass, never worse than the start, feasibility first, limits,
 // suitability and options.
-#include "solvers/sliding_octree.h"
+#include "sightline/solvers/sliding_octree.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

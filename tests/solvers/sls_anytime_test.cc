@@ -7,8 +7,8 @@
 #include <random>
 #include <string>
 
-#include "solvers/registry.h"
-#include "solvers/sls.h"
+#include "sightline/solvers/registry.h"
+#include "sightline/solvers/sls.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

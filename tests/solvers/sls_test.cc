@@ -1,7 +1,7 @@
 // Tests of sls and its helpers: the permutation structure it detects, the best keeper's undo
 // log against explicit copies, swaps that keep permutations intact, restarts, limits on
 // problems it cannot finish, continuous convergence and feasibility, and its options.
-#include "solvers/sls.h"
+#include "sightline/solvers/sls.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <string>
 #include <type_traits>
 
-#include "solvers/detail/best_keeper.h"
-#include "solvers/detail/permutation_groups.h"
-#include "solvers/grid.h"
-#include "solvers/registry.h"
+#include "sightline/solvers/detail/best_keeper.h"
+#include "sightline/solvers/detail/permutation_groups.h"
+#include "sightline/solvers/grid.h"
+#include "sightline/solvers/registry.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

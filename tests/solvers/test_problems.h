@@ -9,8 +9,8 @@
 #include <memory>
 #include <vector>
 
-#include "csp/kinds/all_different.h"
-#include "csp/problem.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::test_problems {
 

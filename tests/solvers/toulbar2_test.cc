@@ -3,16 +3,16 @@
 // solution that scores that cost here; it proves infeasibility; it keeps a time limit on a
 // problem it cannot finish, returning its best; and it declares unsuitable what .wcsp cannot
 // hold. Registration follows the binary's presence.
-#include "solvers/toulbar2/toulbar2_solver.h"
+#include "sightline/solvers/toulbar2/toulbar2_solver.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <random>
 
-#include "csp/files/wcsp_reader.h"
-#include "csp/kinds/table.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

@@ -9,10 +9,10 @@
 #include <random>
 #include <string>
 
-#include "csp/files/wcsp_reader.h"
-#include "solvers/detail/conditioned_problem.h"
-#include "solvers/detail/move_table.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/solvers/detail/conditioned_problem.h"
+#include "sightline/solvers/detail/move_table.h"
+#include "sightline/solvers/registry.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {

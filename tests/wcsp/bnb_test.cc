@@ -1,7 +1,7 @@
 // bnb against brute force on random small problems mixing tables (dense, sparse, hard,
 // soft), not-equal and all-different constraints, plus its limits, start bound, counting
 // and infeasibility proofs.
-#include "solvers/bnb.h"
+#include "sightline/solvers/bnb.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <regex>
 
 #include "brute_force.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/not_equal.h"
-#include "csp/kinds/table.h"
-#include "solvers/registry.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

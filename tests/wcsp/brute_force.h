@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "csp/problem.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::testing {
 

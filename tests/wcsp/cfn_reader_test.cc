@@ -4,7 +4,7 @@
 // a hand-written file using the format's other features scores every assignment as the
 // format says, worked out here by hand; compressed files; and malformed files are refused
 // with their line.
-#include "csp/files/cfn_reader.h"
+#include "sightline/csp/files/cfn_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include <random>
 #include <sstream>
 
-#include "csp/files/wcsp_reader.h"
-#include "csp/input_error.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/input_error.h"
 #include "reference_wcsp.h"
 #include "wcsp_to_cfn.h"
 

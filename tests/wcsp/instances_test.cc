@@ -6,9 +6,9 @@
 
 #include <fstream>
 
-#include "csp/files/wcsp_reader.h"
+#include "sightline/csp/files/wcsp_reader.h"
 #include "reference_wcsp.h"
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

@@ -12,14 +12,14 @@
 #include <random>
 
 #include "brute_force.h"
-#include "csp/files/wcsp_reader.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/linear.h"
-#include "csp/kinds/not_equal.h"
-#include "csp/kinds/table.h"
-#include "solvers/detail/bnb_soft_arc.h"
-#include "solvers/detail/bnb_wcsp_view.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/linear.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/solvers/detail/bnb_soft_arc.h"
+#include "sightline/solvers/detail/bnb_wcsp_view.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
 namespace {

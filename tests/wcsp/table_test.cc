@@ -1,15 +1,15 @@
 // The table kind against plain references: a std::map of the listed tuples for violation,
 // full re-evaluation for deltas, enumeration of the completions for min_violation.
-#include "csp/kinds/table.h"
+#include "sightline/csp/kinds/table.h"
 
 #include <gtest/gtest.h>
 
 #include <map>
 #include <random>
 
-#include "csp/files/problem_file.h"
-#include "csp/input_error.h"
-#include "csp/problem.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 namespace {

@@ -2,7 +2,7 @@
 // independent evaluator of the format written here, with no splitting into hard and soft
 // parts, is the reference), hand-computed costs on 4queens, compressed files, and clear
 // errors for malformed input.
-#include "csp/files/wcsp_reader.h"
+#include "sightline/csp/files/wcsp_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "brute_force.h"
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 #include "reference_wcsp.h"
 
 namespace sightline::csp {

@@ -1,7 +1,7 @@
 // Writing .wcsp: every instance read, written and read back scores every assignment tried
 // the same (feasibility and soft cost); problems built in C++ keep their weighted costs;
 // what .wcsp cannot express is refused by name.
-#include "csp/files/wcsp_writer.h"
+#include "sightline/csp/files/wcsp_writer.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <sstream>
 
 #include "brute_force.h"
-#include "csp/files/wcsp_reader.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/not_equal.h"
-#include "csp/kinds/table.h"
+#include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 namespace {

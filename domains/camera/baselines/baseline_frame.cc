@@ -1,4 +1,4 @@
-#include "domains/camera/baselines/baseline_frame.h"
+#include "sightline/domains/camera/baselines/baseline_frame.h"
 
 namespace sightline::camera {
 

@@ -6,9 +6,9 @@
 
 #include <Eigen/Core>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/camera_controller.h"
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 

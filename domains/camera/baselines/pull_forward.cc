@@ -1,11 +1,11 @@
-#include "domains/camera/baselines/pull_forward.h"
+#include "sightline/domains/camera/baselines/pull_forward.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "domains/camera/baselines/baseline_frame.h"
+#include "sightline/domains/camera/baselines/baseline_frame.h"
 
 namespace sightline::camera {
 

@@ -1,9 +1,9 @@
-#include "domains/camera/baselines/sphere_probe.h"
+#include "sightline/domains/camera/baselines/sphere_probe.h"
 
 #include <algorithm>
 #include <vector>
 
-#include "domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 

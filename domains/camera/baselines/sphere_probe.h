@@ -21,8 +21,8 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "domains/camera/geometry/box_tree.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 

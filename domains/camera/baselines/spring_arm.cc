@@ -1,11 +1,11 @@
-#include "domains/camera/baselines/spring_arm.h"
+#include "sightline/domains/camera/baselines/spring_arm.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "domains/camera/baselines/baseline_frame.h"
+#include "sightline/domains/camera/baselines/baseline_frame.h"
 
 namespace sightline::camera {
 

@@ -20,10 +20,10 @@
 #include <optional>
 #include <string>
 
-#include "domains/camera/baselines/sphere_probe.h"
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/camera_controller.h"
-#include "domains/camera/scene.h"
+#include "sightline/domains/camera/baselines/sphere_probe.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/constraints/clearance.h"
+#include "sightline/domains/camera/constraints/clearance.h"
 
 #include <algorithm>
 

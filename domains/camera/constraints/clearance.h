@@ -17,9 +17,9 @@
 // Scope (cam_x, cam_y, cam_z); radius from the frame parameter clearance_radius.
 #pragma once
 
-#include "csp/constraint.h"
-#include "domains/camera/constraints/frame_parameters.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/domains/camera/constraints/frame_parameters.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/constraints/frame_parameters.h"
+#include "sightline/domains/camera/constraints/frame_parameters.h"
 
 #include <iterator>
 

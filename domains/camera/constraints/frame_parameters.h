@@ -20,7 +20,7 @@
 
 #include <Eigen/Core>
 
-#include "csp/parameters.h"
+#include "sightline/csp/parameters.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/constraints/future_visibility.h"
+#include "sightline/domains/camera/constraints/future_visibility.h"
 
 #include <algorithm>
 #include <array>

@@ -19,9 +19,9 @@
 // (CameraProblem) updates it each frame.
 #pragma once
 
-#include "csp/constraint.h"
-#include "domains/camera/constraints/bounded_violation.h"
-#include "domains/camera/motion_prediction.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/domains/camera/constraints/bounded_violation.h"
+#include "sightline/domains/camera/motion_prediction.h"
 
 namespace sightline::camera {
 

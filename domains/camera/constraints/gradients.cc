@@ -3,7 +3,7 @@
 // so the template-heavy Ceres headers are compiled once.
 #include <ceres/jet.h>
 
-#include "domains/camera/constraints/smooth_constraints.h"
+#include "sightline/domains/camera/constraints/smooth_constraints.h"
 
 namespace sightline::camera {
 namespace {

@@ -1,4 +1,4 @@
-#include "domains/camera/constraints/occlusion.h"
+#include "sightline/domains/camera/constraints/occlusion.h"
 
 #include <algorithm>
 #include <bit>

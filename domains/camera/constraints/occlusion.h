@@ -25,11 +25,11 @@
 #include <Eigen/Core>
 #include <array>
 
-#include "csp/constraint.h"
-#include "domains/camera/constraints/bounded_violation.h"
-#include "domains/camera/constraints/frame_parameters.h"
-#include "domains/camera/scene.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/domains/camera/constraints/bounded_violation.h"
+#include "sightline/domains/camera/constraints/frame_parameters.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 

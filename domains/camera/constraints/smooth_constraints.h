@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "csp/constraint.h"
-#include "domains/camera/constraints/cost_terms.h"
-#include "domains/camera/constraints/frame_parameters.h"
+#include "sightline/csp/constraint.h"
+#include "sightline/domains/camera/constraints/cost_terms.h"
+#include "sightline/domains/camera/constraints/frame_parameters.h"
 
 namespace sightline::camera {
 

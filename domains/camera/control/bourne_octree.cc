@@ -1,4 +1,4 @@
-#include "domains/camera/control/bourne_octree.h"
+#include "sightline/domains/camera/control/bourne_octree.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "domains/camera/control/octree_search.h"
+#include "sightline/domains/camera/control/octree_search.h"
 
 namespace sightline::camera {
 

@@ -15,9 +15,9 @@
 #include <optional>
 #include <string>
 
-#include "domains/camera/control/camera_problem_view.h"
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/domains/camera/control/camera_problem_view.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::camera {
 

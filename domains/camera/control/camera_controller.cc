@@ -1,10 +1,10 @@
-#include "domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/control/camera_controller.h"
 
 #include <stdexcept>
 
-#include "domains/camera/baselines/pull_forward.h"
-#include "domains/camera/baselines/spring_arm.h"
-#include "domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/baselines/pull_forward.h"
+#include "sightline/domains/camera/baselines/spring_arm.h"
+#include "sightline/domains/camera/control/chase_camera.h"
 
 namespace sightline::camera {
 

@@ -10,11 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "csp/score.h"
-#include "domains/camera/area_profile_switch.h"
-#include "domains/camera/profile.h"
-#include "domains/camera/scene.h"
-#include "domains/camera/trajectory.h"
+#include "sightline/csp/score.h"
+#include "sightline/domains/camera/area_profile_switch.h"
+#include "sightline/domains/camera/profile.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
 

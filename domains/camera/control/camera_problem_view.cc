@@ -1,4 +1,4 @@
-#include "domains/camera/control/camera_problem_view.h"
+#include "sightline/domains/camera/control/camera_problem_view.h"
 
 #include <stdexcept>
 

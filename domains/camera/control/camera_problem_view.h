@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "csp/problem.h"
-#include "domains/camera/constraints/bounded_violation.h"
-#include "domains/camera/constraints/occlusion.h"
-#include "domains/camera/constraints/smooth_constraints.h"
-#include "domains/camera/scene.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/constraints/bounded_violation.h"
+#include "sightline/domains/camera/constraints/occlusion.h"
+#include "sightline/domains/camera/constraints/smooth_constraints.h"
+#include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {
 

@@ -1,7 +1,7 @@
-#include "domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
 
-#include "domains/camera/control/bourne_octree.h"
-#include "domains/camera/control/occlusion_octree.h"
+#include "sightline/domains/camera/control/bourne_octree.h"
+#include "sightline/domains/camera/control/occlusion_octree.h"
 
 namespace sightline::camera {
 

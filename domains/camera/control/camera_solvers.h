@@ -5,7 +5,7 @@
 // them like any other ("occlusion-octree", "bourne-octree", "occlusion-octree>ceres-refine").
 #pragma once
 
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::camera {
 

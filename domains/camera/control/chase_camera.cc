@@ -1,4 +1,4 @@
-#include "domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/control/chase_camera.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
 
 namespace sightline::camera {
 

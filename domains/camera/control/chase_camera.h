@@ -57,11 +57,11 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/camera_controller.h"
-#include "domains/camera/control/horizon_planner.h"
-#include "domains/camera/scene.h"
-#include "solvers/registry.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/control/horizon_planner.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::camera {
 

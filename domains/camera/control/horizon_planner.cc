@@ -1,4 +1,4 @@
-#include "domains/camera/control/horizon_planner.h"
+#include "sightline/domains/camera/control/horizon_planner.h"
 
 #include <algorithm>
 #include <array>

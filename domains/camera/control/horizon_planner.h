@@ -66,8 +66,8 @@
 #include <optional>
 #include <vector>
 
-#include "csp/problem.h"
-#include "domains/camera/camera_problem.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/camera_problem.h"
 
 namespace sightline::camera {
 

@@ -1,11 +1,11 @@
-#include "domains/camera/control/occlusion_octree.h"
+#include "sightline/domains/camera/control/occlusion_octree.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "domains/camera/control/octree_search.h"
+#include "sightline/domains/camera/control/octree_search.h"
 
 namespace sightline::camera {
 

@@ -31,10 +31,10 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/control/camera_problem_view.h"
-#include "domains/camera/control/octree_search.h"
-#include "solvers/options.h"
-#include "solvers/solver.h"
+#include "sightline/domains/camera/control/camera_problem_view.h"
+#include "sightline/domains/camera/control/octree_search.h"
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
 
 namespace sightline::camera {
 

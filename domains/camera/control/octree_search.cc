@@ -1,4 +1,4 @@
-#include "domains/camera/control/octree_search.h"
+#include "sightline/domains/camera/control/octree_search.h"
 
 #include <algorithm>
 #include <cmath>

@@ -33,8 +33,8 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "csp/problem.h"
-#include "domains/camera/control/camera_problem_view.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/control/camera_problem_view.h"
 
 namespace sightline::camera {
 

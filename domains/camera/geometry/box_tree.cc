@@ -1,4 +1,4 @@
-#include "domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
 
 #include <algorithm>
 #include <array>

@@ -20,8 +20,8 @@
 #include <optional>
 #include <vector>
 
-#include "domains/camera/geometry/aabb.h"
-#include "domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 

@@ -23,7 +23,7 @@
 #include <Eigen/Core>
 #include <utility>
 
-#include "domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/geometry/aabb.h"
 
 namespace sightline::camera {
 

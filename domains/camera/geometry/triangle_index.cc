@@ -1,4 +1,4 @@
-#include "domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
 
 #include <embree3/rtcore.h>
 

@@ -40,7 +40,7 @@
 #include <optional>
 #include <span>
 
-#include "domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
 
 namespace sightline::camera {
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "domains/camera/geometry/aabb.h"
+#include "sightline/domains/camera/geometry/aabb.h"
 
 namespace sightline::camera {
 

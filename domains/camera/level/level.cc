@@ -1,4 +1,4 @@
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <sstream>
 #include <system_error>
 
-#include "domains/camera/level/mesh_import.h"
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/level/mesh_import.h"
+#include "sightline/domains/camera/level/q3_level.h"
 
 namespace sightline::camera {
 namespace {

@@ -16,10 +16,10 @@
 #include <optional>
 #include <string>
 
-#include "csp/input_error.h"
-#include "domains/camera/geometry/solid_volume.h"
-#include "domains/camera/geometry/triangle_mesh.h"
-#include "domains/camera/level/level_transform.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/geometry/solid_volume.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/level/level_transform.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/level/level_transform.h"
+#include "sightline/domains/camera/level/level_transform.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/level/mesh_import.h"
+#include "sightline/domains/camera/level/mesh_import.h"
 
 #include <assimp/commonMetaData.h>
 #include <assimp/importerdesc.h>

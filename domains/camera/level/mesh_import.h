@@ -7,7 +7,7 @@
 // polygons are triangulated by assimp.
 #pragma once
 
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 namespace sightline::camera {
 

@@ -1,4 +1,4 @@
-#include "domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
 
 #include <zip.h>
 
@@ -6,7 +6,7 @@
 #include <cctype>
 #include <memory>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::camera {
 

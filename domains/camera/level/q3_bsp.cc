@@ -1,12 +1,12 @@
-#include "domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
 
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
-#include "csp/input_error.h"
-#include "domains/camera/level/q3_patch.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/level/q3_patch.h"
 
 namespace sightline::camera::q3 {
 

@@ -1,13 +1,13 @@
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/level/q3_level.h"
 
 #include <chrono>
 #include <fstream>
 #include <iterator>
 #include <memory>
 
-#include "domains/camera/level/pk3_archive.h"
-#include "domains/camera/level/q3_bsp.h"
-#include "domains/camera/level/q3_solid.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/level/q3_solid.h"
 
 namespace sightline::camera {
 

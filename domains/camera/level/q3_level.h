@@ -6,7 +6,7 @@
 // `transform`, and attaches the brushes as the level's SolidVolume (q3_solid.h).
 #pragma once
 
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 namespace sightline::camera {
 

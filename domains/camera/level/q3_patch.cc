@@ -1,4 +1,4 @@
-#include "domains/camera/level/q3_patch.h"
+#include "sightline/domains/camera/level/q3_patch.h"
 
 #include <algorithm>
 #include <cassert>

@@ -1,4 +1,4 @@
-#include "domains/camera/level/q3_solid.h"
+#include "sightline/domains/camera/level/q3_solid.h"
 
 namespace sightline::camera {
 

@@ -15,9 +15,9 @@
 
 #include <string>
 
-#include "domains/camera/geometry/solid_volume.h"
-#include "domains/camera/level/level_transform.h"
-#include "domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/geometry/solid_volume.h"
+#include "sightline/domains/camera/level/level_transform.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
 
 namespace sightline::camera {
 

@@ -11,11 +11,11 @@
 #include <memory>
 #include <new>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/constraints/bounded_violation.h"
-#include "domains/camera/constraints/occlusion.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/constraints/bounded_violation.h"
+#include "sightline/domains/camera/constraints/occlusion.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
 
 #include "tests/count_allocations.h"
 

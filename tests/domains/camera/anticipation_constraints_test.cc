@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "csp/files/yaml_spec.h"
-#include "csp/input_error.h"
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/constraints/future_visibility.h"
-#include "domains/camera/motion_prediction.h"
-#include "domains/camera/profile_file.h"
-#include "experiments/independent_check.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/constraints/future_visibility.h"
+#include "sightline/domains/camera/motion_prediction.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/experiments/independent_check.h"
 
 namespace sightline::camera {
 namespace {

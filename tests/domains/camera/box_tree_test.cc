@@ -7,7 +7,7 @@
 #include <random>
 #include <set>
 
-#include "domains/camera/geometry/box_tree.h"
+#include "sightline/domains/camera/geometry/box_tree.h"
 
 namespace sightline::camera {
 namespace {

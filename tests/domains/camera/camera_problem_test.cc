@@ -1,14 +1,14 @@
 // The camera problem: built once from a scene and a profile, re-parameterised every frame;
 // its costs are the weighted violations computed by hand; profile extras take part; and the
 // generic solvers can work on it.
-#include "domains/camera/camera_problem.h"
+#include "sightline/domains/camera/camera_problem.h"
 
 #include <gtest/gtest.h>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
-#include "solvers/registry.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::camera {
 namespace {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "csp/problem.h"
-#include "domains/camera/constraints/clearance.h"
-#include "domains/camera/constraints/occlusion.h"
-#include "domains/camera/constraints/smooth_constraints.h"
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/constraints/clearance.h"
+#include "sightline/domains/camera/constraints/occlusion.h"
+#include "sightline/domains/camera/constraints/smooth_constraints.h"
 
 namespace sightline::camera {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/geometry/segment_box.h"
-#include "domains/camera/nearby_boxes.h"
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/nearby_boxes.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 namespace {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/camera_solvers.h"
-#include "domains/camera/control/chase_camera.h"
-#include "domains/camera/scene_file.h"
-#include "solvers/registry.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::camera {
 namespace {

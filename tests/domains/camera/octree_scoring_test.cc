@@ -16,12 +16,12 @@
 #include <random>
 #include <string>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/constraints/bounded_violation.h"
-#include "domains/camera/control/camera_problem_view.h"
-#include "domains/camera/control/octree_search.h"
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/constraints/bounded_violation.h"
+#include "sightline/domains/camera/control/camera_problem_view.h"
+#include "sightline/domains/camera/control/octree_search.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
 
 namespace sightline::camera {
 namespace {

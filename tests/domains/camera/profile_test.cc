@@ -2,9 +2,9 @@
 // desired height and distance (thesis table 9) on entering and leaving areas.
 #include <gtest/gtest.h>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/area_profile_switch.h"
-#include "domains/camera/profile_file.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/area_profile_switch.h"
+#include "sightline/domains/camera/profile_file.h"
 
 namespace sightline::camera {
 namespace {

@@ -12,7 +12,7 @@
 #include <random>
 #include <string>
 
-#include "domains/camera/scene_at_time.h"
+#include "sightline/domains/camera/scene_at_time.h"
 
 namespace sightline::camera {
 namespace {

@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "csp/files/yaml_spec.h"
-#include "domains/camera/scene_file.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/domains/camera/scene_file.h"
 
 namespace sightline::camera {
 namespace {

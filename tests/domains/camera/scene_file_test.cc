@@ -1,13 +1,13 @@
 // Scene files: what a valid file gives, and that every kind of bad input is an InputError
 // naming the right line and saying what was expected.
-#include "domains/camera/scene_file.h"
+#include "sightline/domains/camera/scene_file.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "csp/files/yaml_spec.h"
+#include "sightline/csp/files/yaml_spec.h"
 
 namespace sightline::camera {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "domains/camera/scene.h"
-#include "domains/camera/space_sensor.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/domains/camera/space_sensor.h"
 
 namespace sightline::camera {
 namespace {

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "domains/camera/geometry/segment_box.h"
+#include "sightline/domains/camera/geometry/segment_box.h"
 
 namespace sightline::camera {
 namespace {

@@ -1,6 +1,6 @@
 // The character's state between keyframes: linear position, shorter-arc yaw, piecewise
 // constant velocity, and the frame grid with both ends included.
-#include "domains/camera/trajectory.h"
+#include "sightline/domains/camera/trajectory.h"
 
 #include <gtest/gtest.h>
 

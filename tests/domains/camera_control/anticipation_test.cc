@@ -23,13 +23,13 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/profile_file.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/independent_check.h"
-#include "experiments/scene_files.h"
-#include "experiments/scene_generator.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/scene_generator.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline {
 namespace {

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/baselines/pull_forward.h"
-#include "domains/camera/baselines/sphere_probe.h"
-#include "domains/camera/baselines/spring_arm.h"
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/independent_check.h"
-#include "experiments/scene_files.h"
+#include "sightline/domains/camera/baselines/pull_forward.h"
+#include "sightline/domains/camera/baselines/sphere_probe.h"
+#include "sightline/domains/camera/baselines/spring_arm.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/scene_files.h"
 
 namespace sightline {
 namespace {

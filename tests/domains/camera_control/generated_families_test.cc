@@ -25,12 +25,12 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/profile_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/independent_check.h"
-#include "experiments/metrics.h"
-#include "experiments/scene_families.h"
-#include "experiments/trace.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/scene_families.h"
+#include "sightline/experiments/trace.h"
 
 namespace sightline {
 namespace {

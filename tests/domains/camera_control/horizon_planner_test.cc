@@ -14,10 +14,10 @@
 #include <cmath>
 #include <vector>
 
-#include "domains/camera/camera_problem.h"
-#include "domains/camera/control/horizon_planner.h"
-#include "domains/camera/profile_file.h"
-#include "experiments/independent_check.h"
+#include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/control/horizon_planner.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/experiments/independent_check.h"
 #include "tests/count_allocations.h"
 
 namespace sightline::camera {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/camera_run.h"
-#include "experiments/metrics.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/metrics.h"
 
 namespace sightline {
 

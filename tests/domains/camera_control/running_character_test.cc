@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/profile_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/scene_generator.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/scene_generator.h"
 
 namespace sightline {
 namespace {

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/scene_file.h"
-#include "experiments/camera_run.h"
-#include "experiments/independent_check.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/independent_check.h"
 #include "tests/domains/camera_control/independent_judge.h"
-#include "experiments/scene_files.h"
+#include "sightline/experiments/scene_files.h"
 
 namespace sightline {
 namespace {

@@ -1,14 +1,14 @@
 // The colouring problem: built as documented, its cost is the number of conflicting edges,
 // and the solvers find the known chromatic numbers of small graphs.
-#include "domains/colouring/colouring_problem.h"
+#include "sightline/domains/colouring/colouring_problem.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
 
-#include "csp/input_error.h"
-#include "solvers/registry.h"
+#include "sightline/csp/input_error.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::colouring {
 namespace {

@@ -1,12 +1,12 @@
 // DIMACS .col reading: the accepted forms, and every malformed line reported at its line.
-#include "domains/colouring/dimacs_reader.h"
+#include "sightline/domains/colouring/dimacs_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
 
-#include "csp/input_error.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::colouring {
 namespace {

@@ -1,12 +1,12 @@
 // YAML graphs: the Australia example, and mistakes reported at their line.
-#include "domains/colouring/yaml_graph.h"
+#include "sightline/domains/colouring/yaml_graph.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "csp/files/yaml_spec.h"
-#include "csp/input_error.h"
+#include "sightline/csp/files/yaml_spec.h"
+#include "sightline/csp/input_error.h"
 
 namespace sightline::colouring {
 namespace {

@@ -2,7 +2,7 @@
 // every source. Each test writes its own small files (OBJ, glTF 2.0 .gltf and .glb, PLY,
 // COLLADA) into a fresh folder and compares the loaded triangles with positions worked out
 // here, by hand or with Eigen from the file's own numbers.
-#include "domains/camera/level/mesh_import.h"
+#include "sightline/domains/camera/level/mesh_import.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "domains/camera/level/level.h"
+#include "sightline/domains/camera/level/level.h"
 
 namespace sightline::camera {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "domains/camera/level/pk3_archive.h"
-#include "domains/camera/level/q3_bsp.h"
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/level/q3_level.h"
 #include "tests/domains/level/q3_test_support.h"
 
 namespace sightline::camera {

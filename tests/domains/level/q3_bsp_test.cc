@@ -1,12 +1,12 @@
 // The Quake III map reader on real OpenArena maps, against a count written here from the
 // format description (q3_test_support.h), and the .pk3 path against an extraction by unzip.
-#include "domains/camera/level/q3_bsp.h"
+#include "sightline/domains/camera/level/q3_bsp.h"
 
 #include <gtest/gtest.h>
 
-#include "domains/camera/level/pk3_archive.h"
-#include "domains/camera/level/q3_level.h"
-#include "domains/camera/level/q3_patch.h"
+#include "sightline/domains/camera/level/pk3_archive.h"
+#include "sightline/domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/level/q3_patch.h"
 #include "tests/domains/level/q3_test_support.h"
 
 namespace sightline::camera {

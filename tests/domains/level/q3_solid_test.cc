@@ -1,14 +1,14 @@
 // Q3SolidVolume on real maps: the map's own spawn points are open, far points are solid, and
 // every answer matches a brute force written here (its own tree walk over the lumps, and
 // every solid brush of the map tested, not just the leaf's).
-#include "domains/camera/level/q3_solid.h"
+#include "sightline/domains/camera/level/q3_solid.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 #include <thread>
 
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/level/q3_level.h"
 #include "tests/domains/level/q3_test_support.h"
 
 namespace sightline::camera {

@@ -19,7 +19,7 @@
 #include <optional>
 #include <vector>
 
-#include "domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
 
 namespace sightline::camera::brute {
 

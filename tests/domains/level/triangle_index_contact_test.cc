@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
 #include "triangle_test_meshes.h"
 
 namespace sightline::camera {

@@ -15,8 +15,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "domains/camera/geometry/triangle_index.h"
-#include "domains/camera/level/q3_level.h"
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/domains/camera/level/q3_level.h"
 #include "triangle_brute_force.h"
 #include "triangle_test_meshes.h"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "domains/camera/geometry/triangle_mesh.h"
+#include "sightline/domains/camera/geometry/triangle_mesh.h"
 
 namespace sightline::camera::test_meshes {
 

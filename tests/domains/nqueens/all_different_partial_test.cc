@@ -8,10 +8,10 @@
 #include <map>
 #include <random>
 
-#include "csp/incremental_evaluator.h"
-#include "csp/kinds/all_different.h"
-#include "csp/kinds/table.h"
-#include "csp/problem.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/table.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 namespace {

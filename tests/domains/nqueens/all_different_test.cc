@@ -1,7 +1,7 @@
 // Tests of the all_different kind: known violations of both measures, incremental deltas,
 // commits and involvements against full re-evaluation on random moves (both measures, with
 // and without offsets, dense and hash counts), the key range, and the file factory's errors.
-#include "csp/kinds/all_different.h"
+#include "sightline/csp/kinds/all_different.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <map>
 #include <random>
 
-#include "csp/constraint_kinds.h"
-#include "csp/incremental_evaluator.h"
-#include "csp/problem.h"
+#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/incremental_evaluator.h"
+#include "sightline/csp/problem.h"
 
 namespace sightline::csp {
 namespace {

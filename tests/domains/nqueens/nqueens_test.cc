@@ -1,13 +1,13 @@
 // N-queens, the known answers: the grid counts exactly the 92 solutions of 8-queens (and the
 // other small counts), sls solves n = 8, 50 and 1000 with zero conflicts, checked by counting
 // attacking pairs directly from the returned rows, not by trusting the solver's cost.
-#include "domains/nqueens/nqueens.h"
+#include "sightline/domains/nqueens/nqueens.h"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "solvers/registry.h"
+#include "sightline/solvers/registry.h"
 
 namespace sightline::nqueens {
 namespace {
