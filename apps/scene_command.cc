@@ -1,5 +1,5 @@
 // `sightline scene check SCENE.yaml`: reads and validates a scene file (docs/CAMERA.md) and
-// prints its summary: boxes, areas, movers, character, duration, frames, camera and profile. A bad
+// prints its summary: boxes, areas, movers, actors, character, duration, frames, camera and profile. A bad
 // file is an InputError ("FILE:LINE:COL: what was expected"), which main turns into a
 // message and exit status 2.
 #include <iostream>
@@ -79,6 +79,21 @@ void check_scene(const std::string& path) {
   }
   if (scene.movers().size() > kListed) {
     std::cout << "    ... and " << scene.movers().size() - kListed << " more\n";
+  }
+  // Actors: how many, then one line each (they are also among the movers above).
+  std::cout << "  actors:     " << plural(scene.actors().size(), "actor");
+  if (!scene.actors().empty()) std::cout << " (each also a mover above)";
+  std::cout << "\n";
+  for (std::size_t i = 0; i < scene.actors().size() && i < kListed; ++i) {
+    const camera::Actor& a = scene.actors()[i];
+    std::cout << "    " << a.name << " (line " << a.where.line << "): " << a.shape.size.x()
+              << " x " << a.shape.size.y() << " x " << a.shape.size.z() << " m, aim "
+              << a.shape.look_at_height << " m above the feet, "
+              << plural(a.trajectory.keyframes().size(), "keyframe") << ", t = "
+              << a.trajectory.start_time() << " .. " << a.trajectory.end_time() << " s\n";
+  }
+  if (scene.actors().size() > kListed) {
+    std::cout << "    ... and " << scene.actors().size() - kListed << " more\n";
   }
   const camera::CharacterShape& c = scene.character();
   std::cout << "  character:  " << c.size.x() << " x " << c.size.y() << " x " << c.size.z()

@@ -67,6 +67,15 @@ std::optional<SurfaceHit> Scene::first_hit(const Eigen::Vector3d& a,
   return best;
 }
 
+void Scene::set_actors(std::vector<Actor> actors) {
+  actors_ = std::move(actors);
+  for (const Actor& a : actors_) {
+    std::vector<MoverKeyframe> path;
+    for (const Keyframe& k : a.trajectory.keyframes()) path.push_back({k.t, k.position});
+    movers_.emplace_back(a.name, a.shape.size, std::move(path), a.where);
+  }
+}
+
 std::optional<SurfaceHit> Scene::surface_hit(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                              double t) const {
   if (!world_) return first_hit(a, b);

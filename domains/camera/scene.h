@@ -65,6 +65,20 @@ struct CharacterShape {
   }
 };
 
+// A person of the scene other than the followed character (FORMATS.md `actors:`): a body
+// like the character's on a path of its own. The scene also lists each actor as a mover of
+// its size on its path's positions, so actors block sight and the camera as movers do at
+// every frame's time; this record keeps what composition needs (the aim point, the yaw).
+struct Actor {
+  std::string name;  // unique among the scene's actors
+  CharacterShape shape;
+  Trajectory trajectory;
+  csp::SourceLocation where;
+  std::vector<csp::SourceLocation> keyframe_where;  // each keyframe's, for messages
+  CharacterState state_at(double t) const { return trajectory.state_at(t); }
+  Eigen::Vector3d aim_point(double t) const { return shape.look_at(state_at(t).position); }
+};
+
 // What a sight line or probe hits first: a solid box or a level triangle.
 struct SurfaceHit {
   enum class Source { kBox, kTriangle, kMover };
@@ -105,6 +119,11 @@ class Scene {
   // geometry only; SceneAtTime (scene_at_time.h) answers for everything at a given time.
   const std::vector<Mover>& movers() const { return movers_; }
   void set_movers(std::vector<Mover> movers) { movers_ = std::move(movers); }
+  // The other people (FORMATS.md `actors:`), in file order. set_actors also appends a mover
+  // per actor (named after it) to movers(), so they block like movers; call it after
+  // set_movers.
+  const std::vector<Actor>& actors() const { return actors_; }
+  void set_actors(std::vector<Actor> actors);
 
   // The level, when the scene has one (null otherwise). Setting it builds its index.
   const Level* level() const { return level_.get(); }
@@ -186,6 +205,7 @@ class Scene {
   std::vector<SolidBox> solids_;
   std::vector<Area> areas_;
   std::vector<Mover> movers_;
+  std::vector<Actor> actors_;
   CharacterShape character_;
   Trajectory trajectory_;
   double frame_rate_;

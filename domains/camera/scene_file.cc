@@ -1,7 +1,9 @@
 #include "sightline/domains/camera/scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -182,38 +184,47 @@ std::shared_ptr<const Level> read_level(const Spec& spec, const std::string& bas
   return std::make_shared<const Level>(load_level(level));
 }
 
-CharacterShape read_character(const Spec& spec) {
+// A person's size and look-at height from the fields of `block` (the `character:` block or
+// an actor's entry), defaults where absent.
+CharacterShape read_shape(const Spec& block, const std::string& whose) {
   CharacterShape shape;
-  const Spec* block = spec.find("character");
-  if (block == nullptr || block->is_null()) return shape;
-  if (!block->is_map()) block->fail("expected the character {size: [x, y, z], look_at_height: h}");
-  block->check_keys({"size", "look_at_height"});
-  if (const Spec* size = block->find("size")) {
-    shape.size = read_vector3(*size, "the character's size");
+  if (const Spec* size = block.find("size")) {
+    shape.size = read_vector3(*size, whose + " size");
     if (!(shape.size.minCoeff() > 0)) {
-      size->fail("expected the character's size as 3 numbers > 0, got " + size->preview());
+      size->fail("expected " + whose + " size as 3 numbers > 0, got " + size->preview());
     }
   }
-  if (const Spec* h = block->find("look_at_height")) {
-    shape.look_at_height = read_positive(*h, "the look-at height (metres above the feet)");
+  if (const Spec* h = block.find("look_at_height")) {
+    shape.look_at_height = read_positive(*h, whose + " look-at height (metres above the feet)");
     if (shape.look_at_height > shape.size.y()) {
-      h->fail("expected the look-at height to be at most the character's height " +
+      h->fail("expected the look-at height to be at most " + whose + " height " +
               format_number(shape.size.y()) + ", got " + h->preview());
     }
   } else if (shape.look_at_height > shape.size.y()) {
-    block->fail("the default look-at height 1.5 is above the character's height " +
-                format_number(shape.size.y()) + "; give look_at_height");
+    block.fail("the default look-at height 1.5 is above " + whose + " height " +
+               format_number(shape.size.y()) + "; give look_at_height");
   }
   return shape;
 }
 
-std::vector<Keyframe> read_keyframes(const Spec& spec, std::vector<csp::SourceLocation>& where) {
-  const Spec& list = spec.at("trajectory");
+CharacterShape read_character(const Spec& spec) {
+  const Spec* block = spec.find("character");
+  if (block == nullptr || block->is_null()) return CharacterShape{};
+  if (!block->is_map()) block->fail("expected the character {size: [x, y, z], look_at_height: h}");
+  block->check_keys({"size", "look_at_height"});
+  return read_shape(*block, "the character's");
+}
+
+// Keyframes {t, position, yaw} of `list` (the scene's trajectory or an actor's); `whose` is
+// empty for the character, "of actor 'bob'" for an actor.
+std::vector<Keyframe> read_keyframes(const Spec& list, const std::string& whose,
+                                     std::vector<csp::SourceLocation>& where) {
+  const std::string of = whose.empty() ? "" : " " + whose;
   std::vector<Keyframe> keyframes;
   for (const Spec& entry : list.items("a list of keyframes {t, position, yaw}")) {
     if (!entry.is_map()) entry.fail("expected a keyframe {t: s, position: [x, y, z], yaw: deg}");
     entry.check_keys({"t", "position", "yaw"});
-    const std::string what = "keyframe #" + std::to_string(keyframes.size() + 1);
+    const std::string what = "keyframe #" + std::to_string(keyframes.size() + 1) + of;
     Keyframe k;
     k.t = entry.at("t").as_number("the time of " + what + " (seconds)");
     if (!keyframes.empty() && !(k.t > keyframes.back().t)) {
@@ -226,8 +237,44 @@ std::vector<Keyframe> read_keyframes(const Spec& spec, std::vector<csp::SourceLo
     keyframes.push_back(k);
     where.push_back(entry.where());
   }
-  if (keyframes.empty()) list.fail("expected at least one keyframe in the trajectory");
+  if (keyframes.empty()) list.fail("expected at least one keyframe in the trajectory" + of);
   return keyframes;
+}
+
+// The `actors:` block (FORMATS.md "Actors"): each a unique name, an optional size and
+// look-at height, and a trajectory. "character" names the followed character, which only a
+// scene without `trajectory:` may give this way.
+std::vector<Actor> read_actors(const Spec& spec, bool has_trajectory) {
+  std::vector<Actor> actors;
+  std::map<std::string, int> lines;  // name -> line, for repeated names
+  for (const Spec& entry : optional_list(spec, "actors", "a list of actors")) {
+    if (!entry.is_map()) {
+      entry.fail("expected an actor {name: ..., size: [sx, sy, sz], look_at_height: h, "
+                 "trajectory: [{t: s, position: [x, y, z], yaw: deg}, ...]}, got " +
+                 entry.preview());
+    }
+    entry.check_keys({"name", "size", "look_at_height", "trajectory"});
+    Actor a;
+    a.name = entry.at("name").as_string("an actor's name");
+    if (a.name.empty()) entry.at("name").fail("expected a non-empty actor name");
+    if (const auto it = lines.find(a.name); it != lines.end()) {
+      entry.at("name").fail("actor name '" + a.name + "' is taken by the actor on line " +
+                            std::to_string(it->second) + ": names are unique among the actors");
+    }
+    if (a.name == "character" && has_trajectory) {
+      entry.at("name").fail("the scene has a trajectory:, which is the character's, so no actor "
+                            "may be named 'character'");
+    }
+    lines[a.name] = entry.where().line;
+    const std::string whose = "actor '" + a.name + "'";
+    a.shape = read_shape(entry, whose + "'s");
+    const Spec& path = entry.at("trajectory");
+    if (path.is_null()) entry.fail("expected at least one keyframe in the trajectory of " + whose);
+    a.trajectory = Trajectory(read_keyframes(path, "of " + whose, a.keyframe_where));
+    a.where = entry.where();
+    actors.push_back(std::move(a));
+  }
+  return actors;
 }
 
 std::string solid_name(const Scene& scene, std::size_t i) {
@@ -269,7 +316,7 @@ void check_trajectory(const Scene& scene, const std::vector<csp::SourceLocation>
 Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   if (!spec.is_map()) spec.fail("expected a scene (a mapping with name, boxes, trajectory ...)");
   spec.check_keys({"name", "description", "frame_rate", "character", "level", "boxes", "areas",
-                   "movers", "trajectory", "camera"});
+                   "movers", "actors", "trajectory", "camera"});
   const std::string name = spec.at("name").as_string("the scene's name");
   if (name.empty()) spec.at("name").fail("expected a non-empty scene name");
   double frame_rate = 60;
@@ -280,10 +327,33 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   std::vector<SolidBox> solids = read_solids(spec);
   std::vector<Area> areas = read_areas(spec);
   std::vector<Mover> movers = read_movers(spec);
+  const Spec* trajectory_field = spec.find("trajectory");
+  std::vector<Actor> actors = read_actors(spec, trajectory_field != nullptr);
   std::vector<csp::SourceLocation> keyframe_where;
-  Trajectory trajectory(read_keyframes(spec, keyframe_where));
+  Trajectory trajectory;
+  if (trajectory_field != nullptr) {
+    trajectory = Trajectory(read_keyframes(*trajectory_field, "", keyframe_where));
+  } else {
+    // The followed character may be the actor named "character" (FORMATS.md "Actors").
+    const auto followed = std::find_if(actors.begin(), actors.end(),
+                                       [](const Actor& a) { return a.name == "character"; });
+    if (actors.empty()) spec.at("trajectory");  // missing required field 'trajectory'
+    if (followed == actors.end()) {
+      spec.fail("expected a trajectory: or an actor named 'character' to follow; a scene whose "
+                "actors are framed by a shot: block instead is valid by FORMATS.md, but this "
+                "version does not read shot: blocks yet");
+    }
+    if (spec.find("character")) {
+      spec.at("character").fail("the character is the actor named 'character' here: give its "
+                                "size and look_at_height there, not in a character: block");
+    }
+    character = followed->shape;
+    trajectory = followed->trajectory;
+    keyframe_where = followed->keyframe_where;
+    actors.erase(followed);
+  }
   if (trajectory.duration() * frame_rate > kMaxSceneFrames) {
-    spec.at("trajectory").fail("the trajectory lasts " + format_number(trajectory.duration()) +
+    (trajectory_field ? *trajectory_field : spec).fail("the trajectory lasts " + format_number(trajectory.duration()) +
                                " s, which at " + format_number(frame_rate) +
                                " frames per second is more than " +
                                format_number(kMaxSceneFrames) + " frames");
@@ -294,6 +364,7 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
               frame_rate);
   scene.set_level(std::move(level));
   scene.set_movers(std::move(movers));
+  scene.set_actors(std::move(actors));
   if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
 
   const Spec* camera = spec.find("camera");
