@@ -266,6 +266,10 @@ std::optional<Eigen::Vector3d> ChaseCamera::close_in(const Eigen::Vector3d& look
   return std::nullopt;
 }
 
+// One frame, as its steps: re-parameterise the problem (which also predicts the character's
+// motion), take a discretionary cut if one is due, otherwise solve for a target and move
+// toward it (planned, stepped, escaping or staying) or cut, then flag any long move as a cut
+// and record the frame.
 const CameraFrame& ChaseCamera::update(const CharacterState& character, double dt) {
   const auto started = std::chrono::steady_clock::now();
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("update needs dt > 0");
@@ -275,10 +279,29 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
 
   const AreaTransition transition = problem_.set_frame(character, position_, dt);
   const Eigen::Vector3d look = scene_->character().look_at(character.position);
+  const FrameContext frame{character, dt, look,
+                           since_cut_ >= options_.min_shot_seconds && frames_ > 0};
+  Eigen::Vector3d target;
+  if (const std::optional<CutReason> reason = discretionary_cut(frame, transition)) {
+    target = solve_for_new_shot(character, dt, look);
+    cut_to(target, *reason);
+  } else {
+    target = solve_target(frame);
+    move_or_cut(frame, target);
+  }
+  // A move longer than smooth motion allows is a cut, and flagged as one.
+  if (!frame_.cut && (position_ - frame_.position).norm() > max_step(dt) * (1 + 1e-9)) {
+    cut_to(position_, CutReason::kVisibilityLost);
+  }
+  record_frame(look, target, started);
+  return frame_;
+}
 
-  // Discretionary cuts (thesis table 9): leaving an enclosed area for the outside, and
-  // backing up into an obstruction (once per episode); each only if the profile's cut
-  // policy allows it.
+// Discretionary cuts (thesis table 9): leaving an enclosed area for the outside, and backing
+// up into an obstruction (once per episode); each only if the profile's cut policy allows it
+// and the shot is old enough.
+std::optional<CutReason> ChaseCamera::discretionary_cut(const FrameContext& frame,
+                                                        const AreaTransition& transition) {
   const CutPolicy& policy = problem_.profile().cuts;
   bool left_enclosed = false;
   if (policy.leave_enclosed && transition.left &&
@@ -286,160 +309,197 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
     const auto& now = problem_.effective().area;
     left_enclosed = !now || scene_->areas()[*now].kind != AreaKind::kEnclosed;
   }
-  const bool backing = policy.backing_up && backed_up(character, look);
+  const bool backing = policy.backing_up && backed_up(frame.character, frame.look);
   const bool backing_started = backing && !was_backed_up_;
   was_backed_up_ = backing;
-  const bool may_cut = since_cut_ >= options_.min_shot_seconds && frames_ > 0;
+  if (!frame.may_cut || !(left_enclosed || backing_started)) return std::nullopt;
+  return left_enclosed ? CutReason::kLeftEnclosedArea : CutReason::kBackedUpToObstacle;
+}
 
-  Eigen::Vector3d target;
-  if (may_cut && (left_enclosed || backing_started)) {
-    target = solve_for_new_shot(character, dt, look);
-    cut_to(target, left_enclosed ? CutReason::kLeftEnclosedArea : CutReason::kBackedUpToObstacle);
+// The solver's target near the camera; when it is unusable, the solver asked once more
+// around the ideal position. (Bourne's octree ignores visibility and may still fail; that
+// is the point.)
+Eigen::Vector3d ChaseCamera::solve_target(const FrameContext& frame) {
+  Eigen::Vector3d target = solve_from_here();
+  if (options_.visibility_guard && !usable(target, frame.look)) {
+    const Eigen::Vector3d other = solve_for_new_shot(frame.character, frame.dt, frame.look);
+    if (usable(other, frame.look)) target = other;
+  }
+  return target;
+}
+
+// The solver's target moves a little every frame; the spring follows a low-passed copy,
+// and the planner also its velocity, low-passed alike.
+const Eigen::Vector3d& ChaseCamera::low_pass(const Eigen::Vector3d& target, double dt) {
+  const double keep =
+      options_.target_smoothing > 0 ? std::exp(-dt / options_.target_smoothing) : 0.0;
+  const auto stages = static_cast<std::size_t>(options_.target_smoothing_stages);
+  for (std::size_t i = 0; i < stages; ++i) {
+    const Eigen::Vector3d& input = i == 0 ? target : filtered_target_[i - 1];
+    filtered_target_[i] = keep * filtered_target_[i] + (1 - keep) * input;
+  }
+  const Eigen::Vector3d& followed = filtered_target_[stages - 1];
+  followed_velocity_ = keep * followed_velocity_ + (1 - keep) * (followed - last_followed_) / dt;
+  last_followed_ = followed;
+  return followed;
+}
+
+// The planner's first frame toward the followed target, taken when it has one.
+bool ChaseCamera::follow_plan(const Eigen::Vector3d& followed, const Eigen::Vector3d& look,
+                              double dt) {
+  const HorizonPlanner::State now{position_, velocity_, acceleration_};
+  const auto planned = planner_->plan(now, followed, followed_velocity_, look, dt);
+  if (!planned) return false;
+  position_ = planned->position;
+  velocity_ = planned->velocity;
+  acceleration_ = planned->acceleration;
+  return true;
+}
+
+// cuts.cut_ahead: no planned trajectory keeps the look-at point in sight this frame, and a
+// mover will hide it from where the camera is for most of the horizon (a door shutting, a
+// bus, not a passer-by). Escapes (velocity jumps, each buying a frame) would only delay the
+// forced cut: it comes now, to a shot that keeps the predicted points. Sets `target` to
+// that shot and returns true, or returns false when the rule does not apply or no such shot
+// exists (then the frame goes on as without the option).
+bool ChaseCamera::cut_ahead_shot(const FrameContext& frame, Eigen::Vector3d& target) {
+  if (problem_.prediction().size() == 0 || planner_->regains_sight() || !shut_out(position_, true)) {
+    return false;
+  }
+  std::optional<Eigen::Vector3d> shot;
+  if (usable(target, frame.look) && !shut_out(target, false)) shot = target;
+  if (!shot) {
+    const Eigen::Vector3d other = solve_for_new_shot(frame.character, frame.dt, frame.look);
+    if (usable(other, frame.look) && !shut_out(other, false)) shot = other;
+  }
+  if (!shot) shot = close_in(frame.look, true);
+  if (!shot) return false;
+  target = *shot;
+  return true;
+}
+
+// The spring's step, or a half or a quarter of it (not with smooth_escape, whose moves
+// include the shorter steps), if it keeps the look-at point visible and crosses nothing.
+bool ChaseCamera::take_step(const Eigen::Vector3d& step, const Eigen::Vector3d& velocity,
+                            const Eigen::Vector3d& look, bool escapes) {
+  const bool guard = options_.visibility_guard;
+  for (double fraction : {1.0, 0.5, 0.25}) {
+    if (escapes && fraction < 1) break;
+    const Eigen::Vector3d next = position_ + fraction * (step - position_);
+    if (!guard || (usable(next, look) && sees(position_, next))) {
+      velocity_ = fraction * velocity;
+      position_ = next;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Smooth motion if a planned or stepped move keeps the character visible and crosses no
+// geometry; else an escape move; else stay (cutting when stuck too long), or cut when
+// staying loses sight too.
+void ChaseCamera::move_or_cut(const FrameContext& frame, Eigen::Vector3d& target) {
+  const CutPolicy& policy = problem_.profile().cuts;
+  const Eigen::Vector3d& look = frame.look;
+  const double dt = frame.dt;
+  const Eigen::Vector3d& followed = low_pass(target, dt);
+  const Eigen::Vector3d last_velocity = velocity_;
+  Eigen::Vector3d velocity;
+  const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
+  const bool guard = options_.visibility_guard;
+  const bool escapes = guard && policy.smooth_escape;
+  const bool planned_move = guard && planner_ && follow_plan(followed, look, dt);
+  bool moved = planned_move;
+  const bool cut_ahead = guard && planner_ && !moved && escapes && policy.cut_ahead &&
+                         cut_ahead_shot(frame, target);
+  if (!moved && !cut_ahead) moved = take_step(step, velocity, look, escapes);
+  const std::optional<Eigen::Vector3d> escape =
+      !moved && escapes && !cut_ahead ? smooth_escape(look, step, dt) : std::nullopt;
+  if (planned_move) {
+    check_left_behind(frame, target);
+  } else if (moved) {
+    stuck_for_ = 0;
+  } else if (cut_ahead) {
+    cut_to(target, CutReason::kVisibilityLost);
+  } else if (escape) {
+    velocity_ = (*escape - position_) / dt;
+    position_ = *escape;
+    stuck_for_ = 0;
+  } else if (usable(position_, look)) {
+    stay(frame, target);
   } else {
-    target = solve_from_here();
-    const bool guard = options_.visibility_guard;
-    if (guard && !usable(target, look)) {
-      // The solver found nothing usable near the camera: ask it once more around the ideal
-      // position. (Bourne's octree ignores visibility and may still fail; that is the point.)
-      const Eigen::Vector3d other = solve_for_new_shot(character, dt, look);
-      if (usable(other, look)) target = other;
-    }
-    // The solver's target moves a little every frame; the spring follows a low-passed copy.
-    const double keep =
-        options_.target_smoothing > 0 ? std::exp(-dt / options_.target_smoothing) : 0.0;
-    const auto stages = static_cast<std::size_t>(options_.target_smoothing_stages);
-    for (std::size_t i = 0; i < stages; ++i) {
-      const Eigen::Vector3d& input = i == 0 ? target : filtered_target_[i - 1];
-      filtered_target_[i] = keep * filtered_target_[i] + (1 - keep) * input;
-    }
-    const Eigen::Vector3d& followed = filtered_target_[stages - 1];
-    // The planner moves toward a target that moves: its velocity, low-passed like it.
-    followed_velocity_ = keep * followed_velocity_ + (1 - keep) * (followed - last_followed_) / dt;
-    last_followed_ = followed;
-    const Eigen::Vector3d last_velocity = velocity_;
-    // Smooth motion if the step keeps the character visible and crosses no geometry; a
-    // shorter step if only that does; otherwise stay, or cut if staying loses sight too.
-    bool moved = false;
-    Eigen::Vector3d velocity;
-    const Eigen::Vector3d step = smooth_step(followed, dt, &velocity);
-    // With smooth_escape the shorter steps are among the escape's moves (priced there).
-    const bool escapes = guard && policy.smooth_escape;
-    bool planned_move = false;
-    if (guard && planner_) {
-      const HorizonPlanner::State now{position_, velocity_, acceleration_};
-      if (const auto planned = planner_->plan(now, followed, followed_velocity_, look, dt)) {
-        position_ = planned->position;
-        velocity_ = planned->velocity;
-        acceleration_ = planned->acceleration;
-        moved = planned_move = true;
-      }
-    }
-    // cuts.cut_ahead: no planned trajectory keeps the look-at point in sight this frame, and
-    // a mover will hide it from where the camera is for most of the horizon (a door shutting,
-    // a bus, not a passer-by). Escapes (velocity jumps, each buying a frame) would only
-    // delay the forced cut: it comes now, to a shot that keeps the predicted points.
-    bool cut_ahead = false;
-    if (guard && planner_ && !moved && escapes && policy.cut_ahead &&
-        problem_.prediction().size() > 0 && !planner_->regains_sight() &&
-        shut_out(position_, true)) {
-      std::optional<Eigen::Vector3d> shot;
-      if (usable(target, look) && !shut_out(target, false)) shot = target;
-      if (!shot) {
-        const Eigen::Vector3d other = solve_for_new_shot(character, dt, look);
-        if (usable(other, look) && !shut_out(other, false)) shot = other;
-      }
-      if (!shot) shot = close_in(look, true);
-      if (shot) {  // else no such shot: as without the option
-        target = *shot;
-        cut_ahead = true;
-      }
-    }
-    for (double fraction : {1.0, 0.5, 0.25}) {
-      if (moved || cut_ahead) break;
-      if (escapes && fraction < 1) break;
-      const Eigen::Vector3d next = position_ + fraction * (step - position_);
-      if (!guard || (usable(next, look) && sees(position_, next))) {
-        velocity_ = fraction * velocity;
-        position_ = next;
-        moved = true;
-        break;
-      }
-    }
-    const std::optional<Eigen::Vector3d> escape =
-        !moved && escapes && !cut_ahead ? smooth_escape(look, step, dt) : std::nullopt;
-    if (planned_move) {
-      // A planned move always exists while some trajectory is usable, so "blocked" is not
-      // what strands this camera: being left behind is. It makes no progress while it is
-      // farther from the ideal position than the solver can see (the search cube's
-      // half-size) and not getting nearer; past the patience below, if the policy allows,
-      // it cuts to a new shot searched around the ideal position. Only when the ideal
-      // position itself is usable: with the ideal inside a wall (the character backed up
-      // to it) the camera is where it can be, not left behind.
-      const Eigen::Vector3d ideal = problem_.ideal_position();
-      const double off = (position_ - ideal).norm();
-      const bool progress = off <= problem_.profile().search_half_size ||
-                            off < last_off_ideal_ || !usable(ideal, look);
-      last_off_ideal_ = off;
-      stuck_for_ = progress ? 0 : stuck_for_ + dt;
-      // Left behind for longer than the plan looks ahead: no plan will bring it back.
-      const double patience =
-          std::max(options_.stuck_seconds, problem_.profile().anticipation.horizon);
-      if (policy.stuck && stuck_for_ >= patience && may_cut) {
-        const Eigen::Vector3d shot = solve_for_new_shot(character, dt, look);
-        if (usable(shot, look) && (shot - position_).norm() > max_step(dt)) {
-          target = shot;
-          cut_to(shot, CutReason::kStuck);
-        }
-      }
-    } else if (moved) {
-      stuck_for_ = 0;
-    } else if (cut_ahead) {
-      cut_to(target, CutReason::kVisibilityLost);
-    } else if (escape) {
-      velocity_ = (*escape - position_) / dt;
-      position_ = *escape;
-      stuck_for_ = 0;
-    } else if (usable(position_, look)) {
-      velocity_.setZero();
-      set_filtered_target(position_);
-      stuck_for_ += dt;
-      if (policy.stuck && stuck_for_ >= options_.stuck_seconds && may_cut &&
-          usable(target, look) &&
-          (target - position_).norm() > max_step(dt)) {
-        cut_to(target, CutReason::kStuck);
-      }
-    } else {
-      // Forced, whatever the shot's age. The escape profiles also search a new shot around
-      // the ideal position, as the stuck cut does, and cut to the better framed of the two
-      // (framing and sight, no frame coherence: see shot_cost): the solver's target near
-      // the old camera, left behind, is a jump of a metre or two that the next frames lose
-      // again (a character running round corners faster than the camera can follow: a cut
-      // every frame or two). When neither is usable (a vehicle right between camera and
-      // character), they look close in.
-      if (escapes) {
-        const Eigen::Vector3d shot = solve_for_new_shot(character, dt, look);
-        if (usable(shot, look) &&
-            (!usable(target, look) || shot_cost(shot) < shot_cost(target))) {
-          target = shot;
-        } else if (!usable(target, look)) {
-          if (const auto close = close_in(look)) target = *close;
-        }
-      }
-      cut_to(target, CutReason::kVisibilityLost);
-    }
-    // A frame without a plan restarts the left-behind measure; the planner starts from the
-    // acceleration the camera really had (spring, escape, stop).
-    if (!planned_move) last_off_ideal_ = std::numeric_limits<double>::infinity();
-    if (planner_ && !frame_.cut && !planned_move) {
-      acceleration_ = (velocity_ - last_velocity) / dt;
-      const double a = acceleration_.norm();
-      if (a > options_.max_acceleration) acceleration_ *= options_.max_acceleration / a;
+    forced_cut(frame, escapes, target);
+  }
+  // A frame without a plan restarts the left-behind measure; the planner starts from the
+  // acceleration the camera really had (spring, escape, stop).
+  if (!planned_move) last_off_ideal_ = std::numeric_limits<double>::infinity();
+  if (planner_ && !frame_.cut && !planned_move) {
+    acceleration_ = (velocity_ - last_velocity) / dt;
+    const double a = acceleration_.norm();
+    if (a > options_.max_acceleration) acceleration_ *= options_.max_acceleration / a;
+  }
+}
+
+// After a planned move. A planned move always exists while some trajectory is usable, so
+// "blocked" is not what strands this camera: being left behind is. It makes no progress
+// while it is farther from the ideal position than the solver can see (the search cube's
+// half-size) and not getting nearer; past the patience below, if the policy allows, it cuts
+// to a new shot searched around the ideal position. Only when the ideal position itself is
+// usable: with the ideal inside a wall (the character backed up to it) the camera is where
+// it can be, not left behind.
+void ChaseCamera::check_left_behind(const FrameContext& frame, Eigen::Vector3d& target) {
+  const Eigen::Vector3d ideal = problem_.ideal_position();
+  const double off = (position_ - ideal).norm();
+  const bool progress = off <= problem_.profile().search_half_size || off < last_off_ideal_ ||
+                        !usable(ideal, frame.look);
+  last_off_ideal_ = off;
+  stuck_for_ = progress ? 0 : stuck_for_ + frame.dt;
+  // Left behind for longer than the plan looks ahead: no plan will bring it back.
+  const double patience =
+      std::max(options_.stuck_seconds, problem_.profile().anticipation.horizon);
+  if (problem_.profile().cuts.stuck && stuck_for_ >= patience && frame.may_cut) {
+    const Eigen::Vector3d shot = solve_for_new_shot(frame.character, frame.dt, frame.look);
+    if (usable(shot, frame.look) && (shot - position_).norm() > max_step(frame.dt)) {
+      target = shot;
+      cut_to(shot, CutReason::kStuck);
     }
   }
-  // A move longer than smooth motion allows is a cut, and flagged as one.
-  if (!frame_.cut && (position_ - frame_.position).norm() > max_step(dt) * (1 + 1e-9)) {
-    cut_to(position_, CutReason::kVisibilityLost);
+}
+
+// Blocked but still seeing the character: stay, and cut to the target when stuck for
+// stuck_seconds (if the policy allows and the shot is old enough).
+void ChaseCamera::stay(const FrameContext& frame, const Eigen::Vector3d& target) {
+  velocity_.setZero();
+  set_filtered_target(position_);
+  stuck_for_ += frame.dt;
+  if (problem_.profile().cuts.stuck && stuck_for_ >= options_.stuck_seconds && frame.may_cut &&
+      usable(target, frame.look) && (target - position_).norm() > max_step(frame.dt)) {
+    cut_to(target, CutReason::kStuck);
   }
+}
+
+// No smooth move keeps the character visible: cut, whatever the shot's age. The escape
+// profiles also search a new shot around the ideal position, as the stuck cut does, and cut
+// to the better framed of the two (framing and sight, no frame coherence: see shot_cost):
+// the solver's target near the old camera, left behind, is a jump of a metre or two that
+// the next frames lose again (a character running round corners faster than the camera can
+// follow: a cut every frame or two). When neither is usable (a vehicle right between camera
+// and character), they look close in.
+void ChaseCamera::forced_cut(const FrameContext& frame, bool escapes, Eigen::Vector3d& target) {
+  const Eigen::Vector3d& look = frame.look;
+  if (escapes) {
+    const Eigen::Vector3d shot = solve_for_new_shot(frame.character, frame.dt, look);
+    if (usable(shot, look) && (!usable(target, look) || shot_cost(shot) < shot_cost(target))) {
+      target = shot;
+    } else if (!usable(target, look)) {
+      if (const auto close = close_in(look)) target = *close;
+    }
+  }
+  cut_to(target, CutReason::kVisibilityLost);
+}
+
+void ChaseCamera::record_frame(const Eigen::Vector3d& look, const Eigen::Vector3d& target,
+                               std::chrono::steady_clock::time_point started) {
   ++frames_;
   frame_.position = position_;
   frame_.target = look;
@@ -450,7 +510,6 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
   frame_.effective = problem_.effective();
   frame_.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return frame_;
 }
 
 }  // namespace sightline::camera

@@ -51,6 +51,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -113,6 +114,30 @@ class ChaseCamera : public CameraController {
   double max_step(double dt) const override { return options_.max_speed * dt; }
 
  private:
+  // What every step of a frame reads: the character, the time step, the look-at point, and
+  // whether the shot is old enough for a discretionary cut.
+  struct FrameContext {
+    const CharacterState& character;
+    double dt;
+    Eigen::Vector3d look;
+    bool may_cut;
+  };
+  // The steps of update(), in order (see chase_camera.cc).
+  std::optional<CutReason> discretionary_cut(const FrameContext& frame,
+                                             const AreaTransition& transition);
+  Eigen::Vector3d solve_target(const FrameContext& frame);
+  void move_or_cut(const FrameContext& frame, Eigen::Vector3d& target);
+  const Eigen::Vector3d& low_pass(const Eigen::Vector3d& target, double dt);
+  bool follow_plan(const Eigen::Vector3d& followed, const Eigen::Vector3d& look, double dt);
+  bool cut_ahead_shot(const FrameContext& frame, Eigen::Vector3d& target);
+  bool take_step(const Eigen::Vector3d& step, const Eigen::Vector3d& velocity,
+                 const Eigen::Vector3d& look, bool escapes);
+  void check_left_behind(const FrameContext& frame, Eigen::Vector3d& target);
+  void stay(const FrameContext& frame, const Eigen::Vector3d& target);
+  void forced_cut(const FrameContext& frame, bool escapes, Eigen::Vector3d& target);
+  void record_frame(const Eigen::Vector3d& look, const Eigen::Vector3d& target,
+                    std::chrono::steady_clock::time_point started);
+
   // Geometry tests at the frame's time (movers included), through the problem's SceneAtTime.
   bool clear(const Eigen::Vector3d& p) const;
   bool sees(const Eigen::Vector3d& p, const Eigen::Vector3d& look) const;
