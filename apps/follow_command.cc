@@ -20,7 +20,8 @@ namespace {
 
 struct FollowOptions {
   std::string scene;
-  std::string solver;
+  // FORMATS.md "The follow command": without --solver, the recommended camera solver.
+  std::string solver = "occlusion-octree";
   std::vector<std::string> settings;
   std::string profile;
   std::uint64_t seed = 1;
@@ -57,8 +58,8 @@ void add_follow_command(CLI::App& app) {
   cmd->add_option("scene", options->scene, "scene file (YAML, see docs/CAMERA.md)")->required();
   cmd->add_option("--solver", options->solver,
                   "registered solver or pipeline, e.g. occlusion-octree, bourne-octree, sls, "
-                  "occlusion-octree>ceres-refine")
-      ->required();
+                  "occlusion-octree>ceres-refine (default: occlusion-octree, the recommended "
+                  "camera solver)");
   cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
   cmd->add_option("--profile", options->profile,
                   "camera profile: a preset name (thesis-default, close-follow, high-follow, anticipating, anticipating-path) or "

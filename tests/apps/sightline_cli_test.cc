@@ -330,3 +330,23 @@ TEST(SightlineCli, FollowNamesAMissingSceneAndListsTheSolversForAnUnknownOne) {
 }
 
 }  // namespace
+
+namespace sightline::apps {
+namespace {
+
+// FORMATS.md "The follow command": --solver is optional; without it the recommended camera
+// solver films the scene, the same run as naming it.
+TEST(SightlineCli, FollowWithoutASolverUsesTheRecommendedOne) {
+  const TempFile named("named.csv", ""), implicit("implicit.csv", "");
+  const std::string base = "follow '" + scene("into-corner") + "'";
+  ASSERT_EQ(run(base + " --solver occlusion-octree --trace '" + named.path() + "'").status, 0);
+  const Outcome r = run(base + " --trace '" + implicit.path() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "occlusion-octree")) << r.output;
+  const auto a = read_csv(named.path()), b = read_csv(implicit.path());
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t f = 1; f < a.size(); ++f) EXPECT_EQ(a[f][6], b[f][6]) << "frame " << f;
+}
+
+}  // namespace
+}  // namespace sightline::apps
