@@ -12,7 +12,7 @@
 #include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/runs/camera_run.h"
 #include "sightline/solvers/registry.h"
 
 namespace sightline::apps {

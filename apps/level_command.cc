@@ -1,6 +1,6 @@
 // `sightline level walk LEVEL [--map NAME] [--scale S] [--up y|z] --walks N --seed S --out DIR`:
 // loads a level (a Quake III map or any mesh assimp reads, domains/camera/level/level.h),
-// makes N walks on it as a person walks them (experiments/level_walk.h: Recast/Detour, every
+// makes N walks on it as a person walks them (experiments/sources/level_walk.h: Recast/Detour, every
 // person and walk setting an option) and writes one scene file per walk to DIR, named
 // <map or file stem>-walk<k>.yaml. Prints the navigation mesh and, per walk, the file, its
 // seconds, metres and keyframes. Bad input (no level, unknown map, N < 1, a DIR that cannot
@@ -16,8 +16,8 @@
 
 #include "apps/commands.h"
 #include "sightline/domains/camera/level/level.h"
-#include "sightline/experiments/level_walk.h"
-#include "sightline/experiments/spawn_points.h"
+#include "sightline/experiments/sources/level_walk.h"
+#include "sightline/experiments/sources/spawn_points.h"
 
 namespace sightline::apps {
 namespace {

@@ -6,9 +6,9 @@
 // when a run failed, 2 for a bad suite file or an output folder it may not use.
 //
 // `sightline run-one ...` (hidden) is the child an isolated run starts
-// (experiments/isolated_run.h); people do not type it.
+// (experiments/execution/isolated_run.h); people do not type it.
 // Started by mpirun with more than one process, the ranks share the suite instead
-// (experiments/mpi_engine.h, docs/CLUSTER.md): rank 0 prints and writes the report.
+// (experiments/execution/mpi_engine.h, docs/CLUSTER.md): rank 0 prints and writes the report.
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -18,12 +18,13 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
-#include "sightline/experiments/mpi_engine.h"
-#include "sightline/experiments/isolated_run.h"
-#include "sightline/experiments/report.h"
-#include "sightline/experiments/suite.h"
-#include "sightline/experiments/suite_ranking.h"
-#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/execution/mpi_engine.h"
+#include "sightline/experiments/reports/suite_outputs.h"
+#include "sightline/experiments/execution/isolated_run.h"
+#include "sightline/experiments/reports/report.h"
+#include "sightline/experiments/suite/suite.h"
+#include "sightline/experiments/reports/suite_ranking.h"
+#include "sightline/experiments/execution/suite_runner.h"
 
 namespace sightline::apps {
 namespace {

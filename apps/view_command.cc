@@ -1,6 +1,6 @@
 // `sightline view SCENE.yaml --trace A.csv [--trace B.csv ...] --out view.html
 // [--assets inline|beside]`: the interactive 3D replay (the one a suite report holds per scene) for any traces in the
-// FORMATS.md columns, checked against the scene; experiments/trace_view.h does the work.
+// FORMATS.md columns, checked against the scene; experiments/replay/trace_view.h does the work.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "apps/commands.h"
-#include "sightline/experiments/trace_view.h"
+#include "sightline/experiments/replay/trace_view.h"
 
 namespace sightline::apps {
 namespace {

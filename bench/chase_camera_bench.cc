@@ -27,10 +27,10 @@
 #include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/metrics.h"
-#include "sightline/experiments/scene_files.h"
-#include "sightline/experiments/scene_generator.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/sources/scene_files.h"
+#include "sightline/experiments/sources/scene_generator.h"
 
 namespace {
 

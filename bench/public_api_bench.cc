@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/runs/metrics.h"
 #include "sightline/camera.h"
 #include "sightline/sightline.h"
 

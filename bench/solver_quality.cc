@@ -29,8 +29,8 @@
 #include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/metrics.h"
-#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/sources/scene_files.h"
 
 namespace {
 

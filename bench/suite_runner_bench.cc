@@ -1,6 +1,6 @@
 // The cost of isolating suite runs: a suite of 200 short toy runs (N-queens 4..13 x bnb, sls
 // x 10 seeds, each a few milliseconds or less) run by the thread-pool runner in-process and
-// isolated (a run-one child per run, experiments/isolated_run.h), with 1 and 2 jobs. Prints
+// isolated (a run-one child per run, experiments/execution/isolated_run.h), with 1 and 2 jobs. Prints
 // a Markdown table: wall time of the suite, per run, and the overhead per run of isolation.
 // A plain program: it times whole suites. See docs/BENCHMARKS.md.
 //
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "sightline/experiments/suite.h"
-#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/suite/suite.h"
+#include "sightline/experiments/execution/suite_runner.h"
 
 namespace fs = std::filesystem;
 using namespace sightline::experiments;

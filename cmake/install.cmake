@@ -26,8 +26,9 @@ set(SIGHTLINE_RESEARCH_csp sightline_csp sightline_csp_kinds sightline_csp_yaml 
 set(SIGHTLINE_RESEARCH_files sightline_csp_files sightline_toulbar2 sightline_colouring)
 set(SIGHTLINE_RESEARCH_camera sightline_level sightline_camera sightline_camera_control
     sightline_camera_files)
-set(SIGHTLINE_RESEARCH_suites sightline_experiments sightline_replay sightline_suites
-    sightline_mpi_engine recast_detour)
+set(SIGHTLINE_RESEARCH_suites sightline_runs sightline_scene_sources sightline_replay
+    sightline_suite sightline_reports sightline_execution sightline_mpi_engine
+    sightline_experiments recast_detour)
 foreach(component csp files camera suites)
   foreach(target IN LISTS SIGHTLINE_RESEARCH_${component})
     string(REPLACE "sightline_" "" export_name ${target})

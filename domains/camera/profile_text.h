@@ -1,7 +1,7 @@
 // profile_text: one canonical text of a resolved CameraProfile, for telling profiles apart.
 //
 // Why: an experiment suite's run ids hash each run's whole definition so that editing an
-// entry re-runs exactly its runs (experiments/suite_runs.cc). A profile named by its source
+// entry re-runs exactly its runs (experiments/suite/suite_runs.cc). A profile named by its source
 // alone ("inline", "file PATH", "preset NAME") would let an edited inline mapping, an edited
 // profile file or an edited base it inherits from reuse stale results. The text is taken of
 // the profile after every `base:` is applied, so it changes exactly when what the camera is

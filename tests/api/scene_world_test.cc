@@ -13,7 +13,7 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/domains/camera/scene_world.h"
-#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/runs/camera_run.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// `mpirun -np 3 sightline run` end to end (experiments/mpi_engine.h, docs/CLUSTER.md): the
+// `mpirun -np 3 sightline run` end to end (experiments/execution/mpi_engine.h, docs/CLUSTER.md): the
 // same results.csv as the thread pool apart from timing columns; a job whose rank died,
 // submitted again, loses and redoes no finished run; a suite started by the thread pool is
 // finished under MPI; an unwritable folder or a run that cannot be recorded stops every
@@ -20,8 +20,8 @@
 #include <sstream>
 #include <string>
 
-#include "sightline/experiments/suite.h"
-#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/suite/suite.h"
+#include "sightline/experiments/execution/suite_runner.h"
 #include "tests/experiments/comparable_results.h"
 #include "tests/experiments/suite_test_files.h"
 
@@ -146,7 +146,7 @@ TEST(MpiRun, HandsOutTheLongestExpectedRunsFirst) {
   SKIP_WITHOUT_MPI();
   ScratchDir dir("mpi-order");
   // Neither 2 nor 3 queens can be placed, so sls uses its whole 0.1 s on each run; the
-  // dispatcher expects the bigger problem to take longer (experiments/run_order.h).
+  // dispatcher expects the bigger problem to take longer (experiments/execution/run_order.h).
   const std::string suite_file = dir.write("suite.yaml", R"(name: order
 problems:
   instances: [{nqueens: [2, 3]}]

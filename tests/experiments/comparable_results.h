@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "sightline/experiments/suite.h"
-#include "sightline/experiments/suite_runner.h"
+#include "sightline/experiments/suite/suite.h"
+#include "sightline/experiments/execution/suite_runner.h"
 
 namespace sightline::experiments::testing {
 

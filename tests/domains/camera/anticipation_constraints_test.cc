@@ -15,7 +15,7 @@
 #include "sightline/domains/camera/constraints/future_visibility.h"
 #include "sightline/domains/camera/motion_prediction.h"
 #include "sightline/domains/camera/profile_file.h"
-#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/runs/independent_check.h"
 
 namespace sightline::camera {
 namespace {
@@ -23,7 +23,7 @@ namespace {
 using Eigen::Vector3d;
 
 // The test's sight-line judge, independent of the camera domain's queries
-// (experiments/independent_check.h), for one box.
+// (experiments/runs/independent_check.h), for one box.
 bool slab_meets(const Vector3d& a, const Vector3d& b, const Vector3d& lo, const Vector3d& hi) {
   return experiments::segment_blocked({{lo, hi}}, a, b);
 }

@@ -3,7 +3,7 @@
 // (switchbacks of random widths, random crossings by movers), judged independently.
 //
 // Visibility and clearance are checked here without the camera's queries: static boxes and
-// movers (interpolated from their keyframes there) with experiments/independent_check.h,
+// movers (interpolated from their keyframes there) with experiments/runs/independent_check.h,
 // through the metrics' MetricsInput. Never the controller's flag. Every
 // move longer than max_speed x dt must carry the cut flag. Cuts are counted from the trace's
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
@@ -25,11 +25,11 @@
 
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/independent_check.h"
-#include "sightline/experiments/scene_files.h"
-#include "sightline/experiments/scene_generator.h"
-#include "sightline/experiments/trace.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/independent_check.h"
+#include "sightline/experiments/sources/scene_files.h"
+#include "sightline/experiments/sources/scene_generator.h"
+#include "sightline/experiments/runs/trace.h"
 
 namespace sightline {
 namespace {
@@ -313,7 +313,7 @@ TEST(AnticipatingCamera, OnSeededCrossingsKeepsTheLookAtVisibleClearAndCutsRarel
   EXPECT_LE(run_generated("crossings", scenes), 2.0);
 }
 
-// The `mover-scenes` branch's generators (experiments/scene_generator.h), written
+// The `mover-scenes` branch's generators (experiments/sources/scene_generator.h), written
 // independently of this camera: switchbacks of 3-7 lanes 2.2-4.5 m wide with walls
 // 2.5-4 m high, and crossings with people and vehicles (4-12 m/s). Seeds never looked at
 // while the camera was built.

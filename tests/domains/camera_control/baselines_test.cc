@@ -1,6 +1,6 @@
 // The game-camera baselines (domains/camera/baselines/): Unreal-style spring arm and
 // Cinemachine-style pull-forward, on hand-made scenes with known answers, against brute
-// force (experiments/independent_check.h: every box, no BVH), and on the thesis scenes.
+// force (experiments/runs/independent_check.h: every box, no BVH), and on the thesis scenes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,9 +15,9 @@
 #include "sightline/domains/camera/baselines/sphere_probe.h"
 #include "sightline/domains/camera/baselines/spring_arm.h"
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/independent_check.h"
-#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/independent_check.h"
+#include "sightline/experiments/sources/scene_files.h"
 
 namespace sightline {
 namespace {

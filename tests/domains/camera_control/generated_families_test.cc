@@ -1,12 +1,12 @@
 // The anticipating camera (preset `anticipating`, solver occlusion-octree) on seeded scene
-// families nobody tuned it on (experiments/scene_families.h): corridors with L turns, U turns
+// families nobody tuned it on (experiments/sources/scene_families.h): corridors with L turns, U turns
 // and zigzags under ceilings as low as 2.2 m, T and X junctions, rooms joined by doorways,
 // colonnades, a street with traffic crossing behind the character, stairs up and down.
 //
 // Each generated walk is first checked valid here, independently of the generator (its own
 // interior-overlap test of the body against every box at every frame, movers 0.3 m or more
 // from the body, the camera's start clear). Each run is then judged with the independent
-// checker (experiments/independent_check.h through experiments::metrics_input: every box
+// checker (experiments/runs/independent_check.h through experiments::metrics_input: every box
 // and every mover at the frame's time, never the controller's flag): the look-at point
 // visible in every frame, no frame within the clearance radius, no move longer than
 // max_speed x dt without the cut flag, and at most 2 discretionary cuts (any reason but
@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "sightline/domains/camera/profile_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/independent_check.h"
-#include "sightline/experiments/metrics.h"
-#include "sightline/experiments/scene_families.h"
-#include "sightline/experiments/trace.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/independent_check.h"
+#include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/sources/scene_families.h"
+#include "sightline/experiments/runs/trace.h"
 
 namespace sightline {
 namespace {

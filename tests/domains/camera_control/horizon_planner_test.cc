@@ -17,7 +17,7 @@
 #include "sightline/domains/camera/camera_problem.h"
 #include "sightline/domains/camera/control/horizon_planner.h"
 #include "sightline/domains/camera/profile_file.h"
-#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/runs/independent_check.h"
 #include "tests/count_allocations.h"
 
 namespace sightline::camera {
@@ -31,7 +31,7 @@ std::vector<csp::ConstraintId> framing_ids(const CameraProblem& cp) {
 }
 
 // The test's geometry judge, independent of the camera domain's queries
-// (experiments/independent_check.h), for one box.
+// (experiments/runs/independent_check.h), for one box.
 bool segment_meets_box(const Vector3d& a, const Vector3d& b, const Vector3d& lo,
                        const Vector3d& hi) {
   return experiments::segment_blocked({{lo, hi}}, a, b);

@@ -1,5 +1,5 @@
 // The independent judge of a camera run for the camera-control tests: frames where the
-// independent check (experiments/independent_check.h for boxes, independent_triangles.h for
+// independent check (experiments/runs/independent_check.h for boxes, independent_triangles.h for
 // a level's triangles: no BVH, no Embree) sees the look-at point hidden, the camera within
 // the clearance radius, or a move longer than smooth motion allows without the cut flag;
 // plus, on a level with solid volumes, frames with the camera inside solid matter or
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/metrics.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/metrics.h"
 
 namespace sightline {
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/sources/scene_files.h"
 #include "tests/domains/camera_control/independent_judge.h"
 
 namespace sightline {

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "sightline/domains/camera/profile_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/scene_generator.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/sources/scene_generator.h"
 
 namespace sightline {
 namespace {

@@ -1,6 +1,6 @@
 // The chase camera on every thesis scene (experiments/scenes/), judged independently.
 //
-// Visibility and clearance are checked with experiments/independent_check.h (every box, a
+// Visibility and clearance are checked with experiments/runs/independent_check.h (every box, a
 // separate clipping routine), never with the controller's own flag. Every frame-to-frame
 // move longer than the smooth-motion bound must carry the cut flag.
 #include <gtest/gtest.h>
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "sightline/domains/camera/scene_file.h"
-#include "sightline/experiments/camera_run.h"
-#include "sightline/experiments/independent_check.h"
+#include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/independent_check.h"
 #include "tests/domains/camera_control/independent_judge.h"
-#include "sightline/experiments/scene_files.h"
+#include "sightline/experiments/sources/scene_files.h"
 
 namespace sightline {
 namespace {

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "sightline/domains/nqueens/nqueens.h"
-#include "sightline/experiments/camera_run.h"
+#include "sightline/experiments/runs/camera_run.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/solvers/registry.h"
 

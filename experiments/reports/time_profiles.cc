@@ -1,0 +1,122 @@
+#include "sightline/experiments/reports/time_profiles.h"
+
+#include "sightline/experiments/runs/output_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace sightline::experiments {
+namespace {
+
+// Labels in the order they first appear among `runs`.
+template <typename Field>
+std::vector<std::string> first_seen(const std::vector<const RunResult*>& runs, Field field) {
+  std::vector<std::string> labels;
+  for (const RunResult* r : runs)
+    if (std::find(labels.begin(), labels.end(), field(*r)) == labels.end())
+      labels.push_back(field(*r));
+  return labels;
+}
+
+std::size_t index_of(const std::vector<std::string>& labels, const std::string& label) {
+  return static_cast<std::size_t>(std::find(labels.begin(), labels.end(), label) - labels.begin());
+}
+
+}  // namespace
+
+double problem_time_limit(const Suite& suite, const SuiteOutcome& outcome) {
+  if (suite.toy_limits.time_limit_seconds > 0) return suite.toy_limits.time_limit_seconds;
+  const std::vector<std::string> columns = metric_columns(suite);
+  double slowest = 0;
+  for (const RunResult& r : outcome.results) {
+    if (r.kind != "toy") continue;
+    const double seconds = metric_value(columns, r, "time_s");
+    if (!std::isnan(seconds)) slowest = std::max(slowest, seconds);
+  }
+  return std::max(slowest, 1e-6);  // all-zero times: any positive limit
+}
+
+TimedRun problem_timed_run(const std::vector<std::string>& columns, const RunResult& run) {
+  const double seconds = metric_value(columns, run, "time_s");
+  const std::string stop = metric_text(columns, run, "stop");
+  const bool solved =
+      run.status == "ok" && metric_value(columns, run, "feasible") == 1.0 &&
+      (stop == "completed" || stop == "proven optimal" || stop == "target reached") &&
+      !std::isnan(seconds);
+  return {solved, std::isnan(seconds) ? 0.0 : seconds};
+}
+
+TimeProfiles problem_time_profiles(const Suite& suite, const SuiteOutcome& outcome) {
+  TimeProfiles p;
+  const std::vector<std::string> columns = metric_columns(suite);
+  std::vector<const RunResult*> runs;
+  for (const RunResult& r : outcome.results)
+    if (r.kind == "toy") runs.push_back(&r);
+  if (runs.empty()) return p;
+  p.solvers = first_seen(runs, [](const RunResult& r) { return r.solver; });
+  p.instances = first_seen(runs, [](const RunResult& r) { return r.subject; });
+  p.time_limit = problem_time_limit(suite, outcome);
+
+  const double infinite = std::numeric_limits<double>::infinity();
+  p.runs.resize(p.solvers.size());
+  // Per (instance, solver): the seconds of each run, infinite when it is not solved in time.
+  std::vector<std::vector<std::vector<double>>> seconds(
+      p.instances.size(), std::vector<std::vector<double>>(p.solvers.size()));
+  for (const RunResult* r : runs) {
+    const std::size_t s = index_of(p.solvers, r->solver);
+    const TimedRun timed = problem_timed_run(columns, *r);
+    p.runs[s].push_back(timed);
+    const bool in_time = timed.solved && timed.seconds <= p.time_limit;
+    seconds[index_of(p.instances, r->subject)][s].push_back(in_time ? timed.seconds : infinite);
+  }
+  for (const auto& solver_runs : p.runs)
+    p.cactus.push_back(cactus_curve(solver_runs, p.time_limit));
+
+  // The median run per (instance, solver) decides; then statistics.h's ratios.
+  std::vector<std::vector<TimedRun>> table;
+  for (const auto& row : seconds) {
+    std::vector<TimedRun>& out = table.emplace_back();
+    for (const auto& times : row) {
+      const double m = times.empty() ? infinite : median(times);
+      out.push_back({std::isfinite(m), std::isfinite(m) ? m : 0.0});
+    }
+  }
+  p.ratios = performance_ratios(table);
+  p.taus.push_back(1.0);
+  for (const auto& row : p.ratios)
+    for (double r : row)
+      if (std::isfinite(r)) p.taus.push_back(r);
+  std::sort(p.taus.begin(), p.taus.end());
+  p.taus.erase(std::unique(p.taus.begin(), p.taus.end()), p.taus.end());
+  return p;
+}
+
+std::string cactus_csv(const TimeProfiles& profiles) {
+  std::ostringstream out;
+  out << "solver,runs_solved,seconds\n";
+  for (std::size_t s = 0; s < profiles.solvers.size(); ++s)
+    for (const CactusPoint& point : profiles.cactus[s])
+      out << csv_field(profiles.solvers[s]) << ',' << point.runs_solved << ','
+          << statistic_text(point.seconds) << '\n';
+  return out.str();
+}
+
+std::string profiles_csv(const TimeProfiles& profiles) {
+  std::ostringstream out;
+  out << "solver,tau,fraction\n";
+  if (profiles.ratios.empty()) return out.str();
+  std::vector<std::vector<double>> fractions;  // [tau][solver]
+  for (double tau : profiles.taus)
+    fractions.push_back(performance_profile_at(profiles.ratios, tau));
+  for (std::size_t s = 0; s < profiles.solvers.size(); ++s)
+    for (std::size_t t = 0; t < profiles.taus.size(); ++t)
+      out << csv_field(profiles.solvers[s]) << ',' << statistic_text(profiles.taus[t]) << ','
+          << statistic_text(fractions[t][s]) << '\n';
+  return out.str();
+}
+
+}  // namespace sightline::experiments

@@ -1,0 +1,42 @@
+// CameraRun: one scene followed by one chase camera, frame by frame, as a trace plus metrics.
+//
+// The simulation of FORMATS.md: frames every 1 / frame_rate seconds from the first to the
+// last keyframe, both ends included; each frame the character's state comes from the
+// trajectory and the controller updates once. The trace is what `sightline follow` writes;
+// the metrics judge visibility and clearance with the independent brute-force checks.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sightline/domains/camera/control/chase_camera.h"
+#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/scene.h"
+#include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/runs/trace.h"
+
+namespace sightline::experiments {
+
+struct CameraRun {
+  std::vector<TraceRow> trace;
+  RunMetrics metrics;
+  std::string solver;
+  std::string profile;
+};
+
+// Runs `scene` with `profile` and the controller named by `options.solver` (a solver or
+// pipeline driving a ChaseCamera, or a baseline such as "spring-arm"). Throws what
+// make_controller throws for bad names or options.
+CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
+                     const camera::ChaseCameraOptions& options);
+
+// The metrics' view of a scene: its boxes, its movers' keyframes, the character's size, the camera's radius and
+// the controller's smooth-motion bound for one frame (CameraController::max_step).
+MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,
+                           double max_step);
+
+// The one-paragraph summary of a run that `sightline follow` prints.
+std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run);
+
+}  // namespace sightline::experiments

@@ -1,0 +1,70 @@
+#include "sightline/experiments/suite/suite_results.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sightline/experiments/runs/metrics.h"
+
+namespace sightline::experiments {
+namespace {
+
+const std::vector<std::string>& toy_metric_names() {
+  static const std::vector<std::string> names = {
+      "cost", "hard_violations", "feasible", "time_s", "evaluations", "iterations", "stop",
+      "independent_broken"};
+  return names;
+}
+
+}  // namespace
+
+std::string metric_text(const std::vector<std::string>& columns, const RunResult& r,
+                        const std::string& name) {
+  const auto c = static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) -
+                                          columns.begin());
+  return c < r.values.size() ? r.values[c] : std::string();
+}
+
+double metric_value(const std::vector<std::string>& columns, const RunResult& r,
+                    const std::string& name) {
+  const std::string text = metric_text(columns, r, name);
+  if (text.empty()) return std::nan("");
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    return std::nan("");
+  }
+}
+
+std::vector<std::string> metric_columns(const Suite& suite) {
+  std::vector<std::string> columns;
+  if (!suite.scenes.empty()) columns = metric_names();
+  if (!suite.problems.empty()) {
+    columns.insert(columns.end(), toy_metric_names().begin(), toy_metric_names().end());
+  }
+  return columns;
+}
+
+std::vector<std::string> result_columns(const Suite& suite) {
+  std::vector<std::string> columns = {"id", "kind", suite.scenes.empty() ? "problem" : "scene",
+                                      "solver", "profile", "seed", "status"};
+  for (const std::string& m : metric_columns(suite)) columns.push_back(m);
+  columns.push_back("note");
+  for (const char* p : {"host", "cpu_model", "build_commit", "command_line", "run_wall_s",
+                        "run_cpu_s", "run_max_rss_mb"}) {
+    columns.push_back(p);
+  }
+  return columns;
+}
+
+bool is_provenance_column(const std::string& column) {
+  return column == "host" || column == "cpu_model" || column == "build_commit" ||
+         column == "command_line";
+}
+
+bool is_timing_column(const std::string& column) {
+  return column == "solve_us_p50" || column == "solve_us_p99" || column == "solve_us_max" ||
+         column == "time_s" || column == "run_wall_s" || column == "run_cpu_s" ||
+         column == "run_max_rss_mb";
+}
+
+}  // namespace sightline::experiments
