@@ -3,7 +3,7 @@
 # Idempotent: does nothing (and asks no network) when everything is already there.
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config python3
   libeigen3-dev libboost-dev libboost-iostreams-dev libyaml-cpp-dev libceres-dev
   libmuparser-dev libcli11-dev libstb-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
