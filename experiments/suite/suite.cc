@@ -14,6 +14,8 @@
 #include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/runs/file_globs.h"
+#include "sightline/experiments/sources/scene_source.h"
 #include "sightline/experiments/suite/suite_problem.h"
 #include "sightline/experiments/suite/suite_comparisons.h"
 #include "sightline/solvers/registry.h"
@@ -22,33 +24,6 @@ namespace sightline::experiments {
 namespace {
 
 using csp::Spec;
-
-std::string resolve(const std::string& base_dir, const std::string& path) {
-  const std::filesystem::path p(path);
-  if (p.is_absolute() || base_dir.empty()) return p.lexically_normal().string();
-  return (std::filesystem::path(base_dir) / p).lexically_normal().string();
-}
-
-// Paths matching `pattern` (relative to base_dir), sorted. A pattern matching nothing is an
-// InputError at `where`.
-std::vector<std::string> expand_glob(const Spec& where, const std::string& base_dir,
-                                     const std::string& pattern) {
-  const std::string full = resolve(base_dir, pattern);
-  glob_t found{};
-  const int status = ::glob(full.c_str(), 0, nullptr, &found);
-  std::vector<std::string> paths;
-  if (status == 0) {
-    for (std::size_t i = 0; i < found.gl_pathc; ++i) paths.emplace_back(found.gl_pathv[i]);
-  }
-  ::globfree(&found);
-  if (paths.empty()) {
-    const bool is_pattern = pattern.find_first_of("*?[") != std::string::npos;
-    where.fail(is_pattern ? "the pattern '" + pattern + "' (" + full + ") matches no file"
-                          : "file '" + full + "' does not exist");
-  }
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
 
 // A scalar or a list of scalars, as a list.
 std::vector<Spec> one_or_many(const Spec& value) {
@@ -163,19 +138,23 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
   // Scenes.
   std::set<std::string> labels;
   std::set<std::string> paths;
+  // Each entry names a scene source (sources/scene_source.h): a file or glob, or a
+  // generator {source: NAME, seeds: [...]}.
   const Spec& scenes = camera_spec.at("scenes");
   for (const Spec& entry : one_or_many(scenes)) {
-    for (const std::string& path :
-         expand_glob(entry, base_dir, entry.as_string("a scene path or glob"))) {
-      if (!paths.insert(path).second) continue;  // two patterns naming one file: once
+    for (SourcedScene& sourced : SceneSources::global().scenes_of(entry, base_dir)) {
+      const std::string& path = sourced.path;
+      if (!path.empty() && !paths.insert(path).second) continue;  // a file named twice: once
       SuiteScene s;
       s.path = path;
+      s.fingerprint = std::move(sourced.fingerprint);
       if (only &&
           !(only->kind == SuiteRun::Kind::kCamera && only->subject == suite.scenes.size())) {
         suite.scenes.push_back(std::move(s));  // not this child's scene: not loaded
         continue;
       }
-      s.scene = std::make_shared<const camera::Scene>(camera::read_scene_file(path));
+      s.scene = sourced.scene ? sourced.scene
+                              : std::make_shared<const camera::Scene>(camera::read_scene_file(path));
       s.label = s.scene->name();
       if (!only) require_unique(labels, s.label, entry, "scene");
       suite.scenes.push_back(std::move(s));

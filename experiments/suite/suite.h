@@ -35,7 +35,8 @@ namespace sightline::experiments {
 
 struct SuiteScene {
   std::string label;  // the scene's name, unique in the suite
-  std::string path;   // as resolved from the suite file
+  std::string path;   // as resolved from the suite file; empty for a generated scene
+  std::string fingerprint;  // a generated scene's (sources/scene_source.h); "" for files
   std::shared_ptr<const camera::Scene> scene;
 };
 

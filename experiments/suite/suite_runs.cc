@@ -92,7 +92,12 @@ SuiteRun combination(const Suite& suite, SuiteRun::Kind kind, std::size_t subjec
 }
 
 std::string subject_hash(const Suite& suite, SuiteRun::Kind kind, std::size_t subject) {
-  if (kind == SuiteRun::Kind::kCamera) return file_hash(suite.scenes[subject].path);
+  if (kind == SuiteRun::Kind::kCamera) {
+    // A file's content, or a generated scene's fingerprint (sources/scene_source.h).
+    const SuiteScene& scene = suite.scenes[subject];
+    return scene.path.empty() ? StableHash().add(scene.fingerprint).short_hex()
+                              : file_hash(scene.path);
+  }
   const SuiteProblem& p = suite.problems[subject];
   return p.kind == SuiteProblem::Kind::kNQueens ? std::string() : file_hash(p.path);
 }
