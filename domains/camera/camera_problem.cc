@@ -5,6 +5,7 @@
 
 #include "sightline/csp/constraint_kinds.h"
 #include "sightline/csp/kinds/constraint_entry.h"
+#include "sightline/domains/camera/constraints/camera_constraint_kinds.h"
 #include "sightline/domains/camera/constraints/clearance.h"
 #include "sightline/domains/camera/constraints/future_visibility.h"
 #include "sightline/domains/camera/constraints/occlusion.h"
@@ -78,11 +79,31 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
   set_frame(first, start, 1.0 / scene.frame_rate());
 }
 
+// A registered camera constraint kind (constraints/camera_constraint_kinds.h): it gets the
+// camera's context, not a scope.
+void CameraProblem::add_camera_kind(const CameraConstraintKind& kind, const csp::Spec& entry) {
+  std::vector<std::string> keys = kind.fields;
+  keys.insert(keys.end(), {"kind", "weight", "hard"});
+  entry.check_keys(keys);
+  const CameraConstraintContext context{*at_time_, frame_, *prediction_, kCamX, kCamY, kCamZ};
+  std::unique_ptr<csp::Constraint> constraint = kind.make(context, entry);
+  constraint->set_label(kind.name);
+  try {
+    ids_.extras.push_back(problem_->add_constraint(std::move(constraint)));
+  } catch (const std::invalid_argument& e) {
+    entry.fail(e.what());
+  }
+}
+
 void CameraProblem::add_extras() {
   const csp::ConstraintKinds& kinds = csp::ConstraintKinds::global();
   for (const csp::Spec& entry : profile_->extras) {
     if (!entry.is_map()) entry.fail("expected a constraint: {kind: ..., scope: [cam_y], ...}");
     const std::string& kind = entry.at("kind").as_string("a constraint kind name");
+    if (const CameraConstraintKind* camera_kind = CameraConstraintKinds::global().find(kind)) {
+      add_camera_kind(*camera_kind, entry);
+      continue;
+    }
     const csp::Spec* scope = entry.find("scope");
     const csp::Spec* vars = entry.find("vars");
     if ((scope != nullptr) == (vars != nullptr)) {

@@ -41,6 +41,8 @@
 
 namespace sightline::camera {
 
+struct CameraConstraintKind;  // constraints/camera_constraint_kinds.h
+
 class CameraProblem {
  public:
   struct ConstraintIds {
@@ -93,6 +95,7 @@ class CameraProblem {
 
  private:
   void add_extras();
+  void add_camera_kind(const CameraConstraintKind& kind, const csp::Spec& entry);
 
   const Scene* scene_;
   const CameraProfile* profile_;
