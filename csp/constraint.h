@@ -97,6 +97,25 @@ class IncrementalState {
   virtual OccupiedKeys occupied_keys() const { return {}; }
 };
 
+// What a solver or a file writer may exploit in a constraint, asked of it (table_costs(),
+// distinctness()) instead of found by downcasting to a kind: explicit cost tables (the
+// `table` kind) and pairwise-distinct values (`all_different`). The default is neither.
+class TableCosts {
+ public:
+  virtual ~TableCosts() = default;
+  virtual double default_cost() const = 0;  // of every tuple not listed
+  virtual std::size_t num_tuples() const = 0;
+  // Listed tuple i: its value at `position` (scope order), and its cost.
+  virtual double tuple_value(std::size_t i, std::size_t position) const = 0;
+  virtual double tuple_cost(std::size_t i) const = 0;
+};
+
+struct Distinctness {
+  bool zero_offsets = true;      // values compared as they are (no per-variable offsets)
+  bool counts_variables = true;  // violation = repeated variables (else: equal pairs)
+  const char* measure_name = ""; // the measure's name in toulbar2's salldiff ("var", "dec")
+};
+
 class Constraint {
  public:
   explicit Constraint(std::vector<VariableId> scope, double weight = 1.0, bool hard = false);
@@ -115,6 +134,10 @@ class Constraint {
 
   // The registered kind name ("not_equal", "linear", "camera.height", ...).
   virtual std::string_view kind() const = 0;
+
+  // Structure a solver may exploit (see TableCosts above): null / empty when none.
+  virtual const TableCosts* table_costs() const { return nullptr; }
+  virtual std::optional<Distinctness> distinctness() const { return std::nullopt; }
 
   // 0 when satisfied, > 0 otherwise. `values` is the whole assignment, indexed by VariableId.
   virtual double violation(std::span<const double> values) const = 0;

@@ -7,8 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sightline/csp/kinds/all_different.h"
-#include "sightline/csp/kinds/table.h"
 
 namespace sightline::csp {
 namespace {
@@ -31,15 +29,13 @@ std::int64_t integer_cost(const Constraint& c, double cost) {
 
 // The largest weighted cost a soft constraint can take.
 std::int64_t largest_cost(const Constraint& c) {
-  if (const auto* t = dynamic_cast<const Table*>(&c)) {
+  if (const TableCosts* t = c.table_costs()) {
     double largest = t->default_cost();
     for (std::size_t i = 0; i < t->num_tuples(); ++i) largest = std::max(largest, t->tuple_cost(i));
     return integer_cost(c, largest);
   }
-  const auto* a = dynamic_cast<const AllDifferent*>(&c);
-  const double k = static_cast<double>(a->scope().size());
-  return integer_cost(c,
-                      a->measure() == AllDifferent::Measure::kVariables ? k - 1 : k * (k - 1) / 2);
+  const double k = static_cast<double>(c.scope().size());
+  return integer_cost(c, c.distinctness()->counts_variables ? k - 1 : k * (k - 1) / 2);
 }
 
 }  // namespace
@@ -57,8 +53,8 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
   std::int64_t ub = 1;
   for (ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const Constraint& c = problem.constraint(id);
-    const auto* a = dynamic_cast<const AllDifferent*>(&c);
-    if (!dynamic_cast<const Table*>(&c) && !(a && a->has_zero_offsets())) {
+    const std::optional<Distinctness> a = c.distinctness();
+    if (!c.table_costs() && !(a && a->zero_offsets)) {
       throw std::invalid_argument("cannot write " + c.describe() +
                                   " to .wcsp: only table and all_different (without offsets) "
                                   "constraints can be written");
@@ -103,12 +99,12 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
     const auto scope = c.scope();
     out << scope.size();
     for (VariableId v : scope) out << " " << v;
-    if (const auto* a = dynamic_cast<const AllDifferent*>(&c)) {
-      out << " -1 salldiff " << AllDifferent::measure_name(a->measure()) << " "
+    if (const std::optional<Distinctness> a = c.distinctness()) {
+      out << " -1 salldiff " << a->measure_name << " "
           << (c.is_hard() ? ub : integer_cost(c, 1.0)) << "\n";
       continue;
     }
-    const auto& t = dynamic_cast<const Table&>(c);
+    const TableCosts& t = *c.table_costs();
     const std::int64_t default_cost = cost_text(c, t.default_cost());
     // Listed tuples whose values are all in the domains (others can never occur) and whose
     // cost differs from the default (others add nothing).

@@ -62,6 +62,11 @@ class AllDifferent : public Constraint {
   std::unique_ptr<IncrementalState> make_incremental_state(
       std::span<const double> values) const override;
 
+  std::optional<Distinctness> distinctness() const override {
+    return Distinctness{has_zero_offsets(), measure_ == Measure::kVariables,
+                        measure_name(measure_)};
+  }
+
   Measure measure() const { return measure_; }
   // One offset per scope position, or none at all when every offset is zero; offset()
   // reads either.

@@ -64,7 +64,7 @@ class TableError : public std::invalid_argument {
   std::size_t first_entry_;
 };
 
-class Table : public Constraint {
+class Table final : public Constraint, public TableCosts {
  public:
   struct Entry {
     std::vector<double> values;  // one per scope position
@@ -92,12 +92,14 @@ class Table : public Constraint {
   double min_violation(std::span<const double> values,
                        std::span<const std::uint8_t> assigned) const override;
 
+  const TableCosts* table_costs() const override { return this; }
+
   std::size_t arity() const { return scope().size(); }
-  double default_cost() const { return default_cost_; }
-  std::size_t num_tuples() const { return costs_.size(); }
+  double default_cost() const override { return default_cost_; }
+  std::size_t num_tuples() const override { return costs_.size(); }
   // Listed tuple i: its values in scope order, and its cost.
-  double tuple_value(std::size_t i, std::size_t position) const;
-  double tuple_cost(std::size_t i) const { return costs_[i]; }
+  double tuple_value(std::size_t i, std::size_t position) const override;
+  double tuple_cost(std::size_t i) const override { return costs_[i]; }
   // The cheapest cost over every tuple (the default included).
   double min_cost() const { return min_cost_; }
   // Cost of a tuple given in scope order (tuple.size() == arity()).

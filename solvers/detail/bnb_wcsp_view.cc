@@ -5,8 +5,6 @@
 #include <map>
 #include <utility>
 
-#include "sightline/csp/kinds/all_different.h"
-#include "sightline/csp/kinds/table.h"
 
 namespace sightline::solvers::detail {
 
@@ -20,7 +18,7 @@ bool integral(double cost) {
 // An n-ary constraint the consistency can carry: its weighted costs are all integers.
 // Returns its largest weighted cost (0 for a hard one), or -1 when it cannot be carried.
 double nary_largest_cost(const csp::Constraint& con) {
-  if (const auto* table = dynamic_cast<const csp::Table*>(&con)) {
+  if (const csp::TableCosts* table = con.table_costs()) {
     if (con.is_hard()) return 0;
     double largest = con.weight() * table->default_cost();
     if (!integral(largest)) return -1;
@@ -31,7 +29,7 @@ double nary_largest_cost(const csp::Constraint& con) {
     }
     return largest;
   }
-  if (dynamic_cast<const csp::AllDifferent*>(&con)) {
+  if (con.distinctness()) {
     if (con.is_hard()) return 0;
     // Violation: a count of repeated variables or of equal pairs, at most k^2.
     const double k = static_cast<double>(con.scope().size());

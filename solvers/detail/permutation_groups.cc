@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "sightline/csp/kinds/all_different.h"
-
 namespace sightline::solvers::detail {
 
 namespace {
@@ -99,11 +97,10 @@ std::vector<PermutationGroup> find_permutation_groups(const csp::Problem& proble
   csp::Assignment scratch;  // filled by allowed_values when a hard unary constraint needs it
   std::vector<char> hard_unary;  // filled when the first group is found
   for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
-    const auto* all_different = dynamic_cast<const csp::AllDifferent*>(&problem.constraint(id));
-    if (!all_different || !all_different->is_hard() || !all_different->has_zero_offsets()) {
-      continue;
-    }
-    const auto scope = all_different->scope();
+    const csp::Constraint& all_different = problem.constraint(id);
+    const std::optional<csp::Distinctness> distinct = all_different.distinctness();
+    if (!distinct || !all_different.is_hard() || !distinct->zero_offsets) continue;
+    const auto scope = all_different.scope();
     if (scope.size() < 2) continue;
     const csp::Domain& first = problem.domain(scope[0]);
     if (!first.is_discrete() || first.size() != scope.size()) continue;
