@@ -31,12 +31,6 @@ extern char** environ;
 namespace sightline::experiments {
 namespace {
 
-std::string number_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
 double seconds_of(const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; }
 
 // The CPU limit the kernel enforces: whole seconds, rounded up.
@@ -155,12 +149,13 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
   if (wall_timeout) {
     out.how = "timeout";
     out.signal = SIGKILL;
-    out.note = "wall time limit of " + number_text(limits.wall_seconds) + " s reached; killed";
+    out.note =
+        "wall time limit of " + limit_seconds_text(limits.wall_seconds) + " s reached; killed";
   } else if (WIFSIGNALED(status)) {
     out.signal = WTERMSIG(status);
     if (out.signal == SIGXCPU || (out.signal == SIGKILL && cpu_spent)) {
       out.how = "timeout";
-      out.note = "CPU time limit of " + number_text(limits.cpu_seconds) + " s reached";
+      out.note = "CPU time limit of " + limit_seconds_text(limits.cpu_seconds) + " s reached";
     } else {
       out.how = "crash";
       out.note = "killed by signal " + std::to_string(out.signal) + " (" +

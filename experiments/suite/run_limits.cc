@@ -4,21 +4,18 @@
 #include <cstdio>
 
 namespace sightline::experiments {
-namespace {
 
-std::string number_text(double v) {
+std::string limit_seconds_text(double seconds) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
+  std::snprintf(buffer, sizeof buffer, "%g", seconds);
   return buffer;
 }
-
-}  // namespace
 
 std::string RunLimits::text() const {
   std::string out;
   auto add = [&](const std::string& part) { out += (out.empty() ? "" : ",") + part; };
-  if (wall_seconds > 0) add("wall=" + number_text(wall_seconds));
-  if (cpu_seconds > 0) add("cpu=" + number_text(cpu_seconds));
+  if (wall_seconds > 0) add("wall=" + limit_seconds_text(wall_seconds));
+  if (cpu_seconds > 0) add("cpu=" + limit_seconds_text(cpu_seconds));
   if (memory_mb > 0) add("memory_mb=" + std::to_string(memory_mb));
   return out;
 }

@@ -24,4 +24,7 @@ struct RunLimits {
 // Ceres, TBB...): a memory limit below it is refused when the suite is read.
 constexpr std::uint64_t kMinimumMemoryMb = 256;
 
+// Seconds as limits are written ("%g": 60, 2.5), in definitions and messages.
+std::string limit_seconds_text(double seconds);
+
 }  // namespace sightline::experiments
