@@ -5,9 +5,12 @@
 #include <cmath>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
+#include "api/conversions.h"
 #include "sightline/camera.h"
 #include "sightline/version.h"
 
@@ -16,6 +19,8 @@ struct sl_world {
 };
 struct sl_camera {
   std::unique_ptr<sightline::Camera> camera;
+  // The people's states of the frame, converted; sized once, so a frame allocates nothing.
+  std::vector<sightline::PersonState> people;
 };
 
 namespace {
@@ -126,7 +131,7 @@ sl_status guarded(Body&& body) {
   }
 }
 
-bool finite(const sl_vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const sl_vec3& v) { return sightline::finite(from_c(v)); }
 
 sl_status new_world(std::shared_ptr<const sightline::World> world, sl_world** out) {
   auto* w = new sl_world{std::move(world)};
@@ -135,12 +140,13 @@ sl_status new_world(std::shared_ptr<const sightline::World> world, sl_world** ou
   return SL_OK;
 }
 
-std::vector<sightline::PersonState> people_of(const sl_person_state* people, std::size_t count) {
-  std::vector<sightline::PersonState> v(count);
+// Converts into `v` (resized; no allocation once it has the capacity).
+void people_of(const sl_person_state* people, std::size_t count,
+               std::vector<sightline::PersonState>& v) {
+  v.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     v[i] = {from_c(people[i].position), from_c(people[i].velocity), people[i].yaw};
   }
-  return v;
 }
 
 }  // namespace
@@ -228,29 +234,28 @@ sl_status sl_camera_create(sl_world* world, const sl_camera_settings* settings,
     s.has_start = settings->has_start != 0;
     s.start = from_c(settings->start);
     s.frame_rate = settings->frame_rate;
-    const auto states = people_of(people, count);
+    std::vector<sightline::PersonState> states;
+    people_of(people, count, states);
     auto camera = std::make_unique<sightline::Camera>(world->world, s, states, t);
-    auto* c = new sl_camera{std::move(camera)};
+    auto* c = new sl_camera{std::move(camera), std::move(states)};
     remember(c, Kind::kCamera);
     *out = c;
   });
 }
 
-sl_status sl_camera_update(sl_camera* camera, const sl_person_state* people, size_t count, double dt,
-                           sl_pose* out) {
-  if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update: not a live camera");
-  return sl_camera_update_at(camera, people, count, dt, camera->camera->time() + dt, out);
-}
+namespace {
 
-sl_status sl_camera_update_at(sl_camera* camera, const sl_person_state* people, size_t count,
-                              double dt, double t, sl_pose* out) {
-  if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update_at: not a live camera");
+// One frame of a live camera (the handle checked by the caller), at the game's time t when
+// given.
+sl_status update_camera(const char* call, sl_camera* camera, const sl_person_state* people,
+                        size_t count, double dt, std::optional<double> t, sl_pose* out) {
   if (people == nullptr || out == nullptr) {
-    return fail(SL_ERROR_INVALID_ARGUMENT, "sl_camera_update: people and out must not be NULL");
+    return fail(SL_ERROR_INVALID_ARGUMENT, std::string(call) + ": people and out must not be NULL");
   }
   return guarded([&] {
-    const auto states = people_of(people, count);
-    const sightline::CameraPose& p = camera->camera->update(states, dt, t);
+    people_of(people, count, camera->people);
+    const sightline::CameraPose& p = t ? camera->camera->update(camera->people, dt, *t)
+                                       : camera->camera->update(camera->people, dt);
     out->position = to_c(p.position);
     out->target = to_c(p.target);
     out->up = to_c(p.up);
@@ -260,6 +265,20 @@ sl_status sl_camera_update_at(sl_camera* camera, const sl_person_state* people, 
     out->cost = p.cost;
     out->solve_seconds = p.solve_seconds;
   });
+}
+
+}  // namespace
+
+sl_status sl_camera_update(sl_camera* camera, const sl_person_state* people, size_t count, double dt,
+                           sl_pose* out) {
+  if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update: not a live camera");
+  return update_camera("sl_camera_update", camera, people, count, dt, std::nullopt, out);
+}
+
+sl_status sl_camera_update_at(sl_camera* camera, const sl_person_state* people, size_t count,
+                              double dt, double t, sl_pose* out) {
+  if (!alive(camera, Kind::kCamera)) return fail(SL_ERROR_INVALID_HANDLE, "sl_camera_update_at: not a live camera");
+  return update_camera("sl_camera_update_at", camera, people, count, dt, t, out);
 }
 
 sl_status sl_camera_reset(sl_camera* camera, sl_vec3 position) {

@@ -24,8 +24,6 @@ namespace sightline {
 
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void check_people(std::span<const PersonState> people, std::size_t expected) {
   if (people.size() != expected) {
     throw Error("camera: expected the states of " + std::to_string(expected) +
@@ -78,8 +76,8 @@ camera::CharacterState state_of(const PersonState& p, double t) {
   return s;
 }
 
-// The profile's ideal spot behind the person, pulled in toward the look-at point (as a spring
-// arm does) to the farthest point that is open, clear and in sight, in the world at time t.
+// The profile's ideal spot behind the person, pulled in toward the look-at point to the
+// farthest point that is clear and in sight, in the world at time t (pulled_in_start).
 Eigen::Vector3d start_position(const World& world, const camera::CameraProfile& profile,
                                const camera::CharacterShape& shape,
                                const camera::CharacterState& first) {
@@ -87,17 +85,10 @@ Eigen::Vector3d start_position(const World& world, const camera::CameraProfile& 
       first, profile.height.desired, profile.distance.desired, profile.orientation.desired);
   const Eigen::Vector3d look = shape.look_at(first.position);
   const double r = profile.clearance_radius;
-  auto usable = [&](const Eigen::Vector3d& p) {
+  return camera::pulled_in_start(look, ideal, [&](const Eigen::Vector3d& p) {
     return world.clearance(to_vec3(p), r + 1e-6, first.t) >= r &&
            world.line_of_sight(to_vec3(p), to_vec3(look), first.t);
-  };
-  if (usable(ideal)) return ideal;
-  constexpr int kSteps = 64;
-  for (int i = kSteps - 1; i > 0; --i) {
-    const Eigen::Vector3d p = look + (static_cast<double>(i) / kSteps) * (ideal - look);
-    if (usable(p)) return p;
-  }
-  return ideal;  // the first frame cuts away
+  });
 }
 
 CutReason public_reason(camera::CutReason r) {
@@ -116,15 +107,13 @@ CutReason public_reason(camera::CutReason r) {
 
 struct Camera::Impl {
   std::shared_ptr<const World> world;
-  camera::CameraProfile profile;
-  camera::Scene scene;
+  camera::Scene scene;  // holds the profile the controller reads (scene.profile())
   std::size_t people = 0;
   double t = 0;
   std::unique_ptr<camera::ChaseCamera> controller;
   CameraPose pose;
 
-  Impl(std::shared_ptr<const World> w, camera::CameraProfile p, camera::Scene s)
-      : world(std::move(w)), profile(std::move(p)), scene(std::move(s)) {}
+  Impl(std::shared_ptr<const World> w, camera::Scene s) : world(std::move(w)), scene(std::move(s)) {}
 
   void take(const camera::CameraFrame& f) {
     pose.position = to_vec3(f.position);
@@ -187,18 +176,19 @@ Camera::Camera(std::shared_ptr<const World> world, const CameraSettings& setting
     movers.back().place(to_eigen(people[i].position), to_eigen(people[i].velocity), t);
   }
   scene.set_movers(std::move(movers));
-  scene.set_profile(profile, "public API");
+  scene.set_profile(profile, "public API");  // the camera reads it there
   const camera::CharacterState first = state_of(people[0], t);
   scene.set_camera_start(settings.has_start ? to_eigen(settings.start)
                                             : start_position(*world, profile, shape, first));
-  impl_ = std::make_unique<Impl>(world, std::move(profile), std::move(scene));
+  impl_ = std::make_unique<Impl>(world, std::move(scene));
   impl_->people = people.size();
   impl_->t = t;
   camera::ChaseCameraOptions options;
   options.solver = settings.solver;
   options.seed = settings.seed;
   try {
-    impl_->controller = std::make_unique<camera::ChaseCamera>(impl_->scene, impl_->profile, options);
+    impl_->controller = std::make_unique<camera::ChaseCamera>(impl_->scene, impl_->scene.profile(),
+                                                               options);
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {

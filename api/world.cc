@@ -9,12 +9,6 @@
 
 namespace sightline {
 
-namespace {
-
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-}  // namespace
-
 std::shared_ptr<const World> make_geometry_world(const WorldGeometry& geometry) {
   std::vector<camera::SolidBox> solids;
   solids.reserve(geometry.boxes.size());

@@ -169,4 +169,20 @@ struct CameraProfile {
 Eigen::Vector3d ideal_camera_position(const CharacterState& character, double height,
                                       double distance, double orientation_degrees);
 
+// Where a camera starts when its ideal spot may be inside a wall or behind one: `ideal` if
+// `usable(ideal)`, else the farthest of 63 points pulled in from it along the line toward
+// `look` (as a spring arm does) that `usable` accepts, else `ideal` (the first frame then
+// cuts away). Scene::start_camera_position and the public camera share it.
+template <class Usable>
+Eigen::Vector3d pulled_in_start(const Eigen::Vector3d& look, const Eigen::Vector3d& ideal,
+                                Usable&& usable) {
+  if (usable(ideal)) return ideal;
+  constexpr int kSteps = 64;
+  for (int i = kSteps - 1; i > 0; --i) {
+    const Eigen::Vector3d p = look + (static_cast<double>(i) / kSteps) * (ideal - look);
+    if (usable(p)) return p;
+  }
+  return ideal;
+}
+
 }  // namespace sightline::camera

@@ -141,16 +141,9 @@ Eigen::Vector3d Scene::start_camera_position() const {
   // open, clear of surfaces and sees the look-at point.
   const Eigen::Vector3d look = character_.look_at(start.position);
   const double r = profile_.clearance_radius;
-  auto usable = [&](const Eigen::Vector3d& p) {
+  return pulled_in_start(look, ideal, [&](const Eigen::Vector3d& p) {
     return clearance(p, r + 1e-6) >= r && line_of_sight(p, look);
-  };
-  if (usable(ideal)) return ideal;
-  constexpr int kSteps = 64;
-  for (int i = kSteps - 1; i > 0; --i) {
-    const Eigen::Vector3d p = look + (static_cast<double>(i) / kSteps) * (ideal - look);
-    if (usable(p)) return p;
-  }
-  return ideal;  // nothing better along that line: the controller's first frame cuts away
+  });
 }
 
 double Scene::clearance(const Eigen::Vector3d& p, double limit) const {

@@ -36,9 +36,10 @@ std::vector<SourcedScene> files_source(const csp::Spec& entry, const std::string
   return scenes;
 }
 
-// A source of one generated scene per seed.
-SceneSourceInfo seeded(std::string name, std::string description,
-                       std::function<camera::Scene(std::uint64_t)> generate) {
+}  // namespace
+
+SceneSourceInfo seeded_source(std::string name, std::string description,
+                              std::function<camera::Scene(std::uint64_t)> generate) {
   SceneSourceInfo info;
   info.name = std::move(name);
   info.description = std::move(description);
@@ -56,6 +57,8 @@ SceneSourceInfo seeded(std::string name, std::string description,
   return info;
 }
 
+namespace {
+
 void add_builtin_sources(SceneSources& sources) {
   SceneSourceInfo files;
   files.name = "files";
@@ -64,28 +67,28 @@ void add_builtin_sources(SceneSources& sources) {
   files.make = files_source;
   sources.add(std::move(files));
   for (const SceneFamily family : all_scene_families()) {
-    sources.add(seeded(to_string(family), "the seeded " + to_string(family) +
+    sources.add(seeded_source(to_string(family), "the seeded " + to_string(family) +
                                               " family (experiments/sources/scene_families.h)",
                        [family](std::uint64_t seed) { return generate_family(family, seed); }));
   }
-  sources.add(seeded("pillar-forest", "pillars scattered round a winding walk",
+  sources.add(seeded_source("pillar-forest", "pillars scattered round a winding walk",
                      [](std::uint64_t seed) {
                        GeneratedSceneOptions o;
                        o.seed = seed;
                        return generate_pillar_forest(o);
                      }));
-  sources.add(seeded("city", "a city of blocks and streets", [](std::uint64_t seed) {
+  sources.add(seeded_source("city", "a city of blocks and streets", [](std::uint64_t seed) {
     GeneratedSceneOptions o;
     o.seed = seed;
     return generate_city(o);
   }));
-  sources.add(seeded("switchback", "a walk that doubles back between walls",
+  sources.add(seeded_source("switchback", "a walk that doubles back between walls",
                      [](std::uint64_t seed) {
                        SwitchbackOptions o;
                        o.seed = seed;
                        return generate_switchback(o);
                      }));
-  sources.add(seeded("crossings", "people crossing between camera and character",
+  sources.add(seeded_source("crossings", "people crossing between camera and character",
                      [](std::uint64_t seed) {
                        CrossingOptions o;
                        o.seed = seed;

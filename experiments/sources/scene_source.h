@@ -68,6 +68,11 @@ class SceneSources {
   std::map<std::string, SceneSourceInfo> sources_;
 };
 
+// A source of one generated scene per seed (`seed: N` or `seeds: [...]`, default 1), each
+// fingerprinted: the whole of a new seeded source is its generator and this.
+SceneSourceInfo seeded_source(std::string name, std::string description,
+                              std::function<camera::Scene(std::uint64_t)> generate);
+
 // Text that changes exactly when what a camera run of the scene sees changes: its name,
 // frame rate, character, boxes, areas, movers (actors included), trajectory, level file and
 // camera start and profile, every number written round-trippable.

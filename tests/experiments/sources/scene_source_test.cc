@@ -29,21 +29,7 @@ camera::Scene toy_hall(std::uint64_t seed) {
 void register_toy_hall() {
   SceneSources& sources = SceneSources::global();
   if (sources.contains("toy-hall")) return;
-  SceneSourceInfo info;
-  info.name = "toy-hall";
-  info.description = "a hall with one pillar (a test's own source)";
-  info.fields = {"seed", "seeds"};
-  info.make = [](const csp::Spec& entry, const std::string&) {
-    std::vector<SourcedScene> scenes;
-    for (const std::uint64_t seed : entry_seeds(entry)) {
-      SourcedScene s;
-      s.scene = std::make_shared<const camera::Scene>(toy_hall(seed));
-      s.fingerprint = scene_fingerprint(*s.scene);
-      scenes.push_back(std::move(s));
-    }
-    return scenes;
-  };
-  sources.add(std::move(info));
+  sources.add(seeded_source("toy-hall", "a hall with one pillar (a test's own source)", toy_hall));
 }
 
 TEST(SceneSources, ASourceRegisteredByATestIsFilmedFromASuiteFile) {
