@@ -3,7 +3,7 @@
 
 #include "apps/commands.h"
 #include "apps/text_table.h"
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/constraint_entry.h"
 
 namespace sightline::apps {

@@ -46,6 +46,11 @@ std::unique_ptr<IncrementalState> Constraint::make_incremental_state(
   return nullptr;
 }
 
+double Constraint::violation_until(std::span<const double> values, double /*cost_before*/,
+                                   double /*bound*/, double /*cost_after*/) const {
+  return violation(values);
+}
+
 double Constraint::min_violation(std::span<const double> values,
                                  std::span<const std::uint8_t> assigned) const {
   for (VariableId v : scope()) {

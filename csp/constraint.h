@@ -142,6 +142,20 @@ class Constraint {
   // 0 when satisfied, > 0 otherwise. `values` is the whole assignment, indexed by VariableId.
   virtual double violation(std::span<const double> values) const = 0;
 
+  // For searches that drop a candidate as soon as its weighted sum reaches a bound: the
+  // violation, or a lower bound v of it with (cost_before + weight() x v) + cost_after >=
+  // bound, where cost_before is the sum before this term and cost_after the one term known
+  // to come after it (0 when none). When it does not stop it must return exactly
+  // violation(values), computed the same way, so a surviving candidate is scored to the
+  // last bit as by violation(). Kinds whose violation counts many tests (sight lines) stop
+  // counting once the candidate has lost. Default: violation(values).
+  virtual double violation_until(std::span<const double> values, double cost_before,
+                                 double bound, double cost_after) const;
+  // How much one violation() costs, in queries of an outside world (a ray, a distance
+  // query): 0 for arithmetic (the default). Searches ask the cheap ones first and the
+  // costly ones in this order, so they stop before the costliest.
+  virtual double query_cost() const { return 0; }
+
   // Incremental state for local search; nullptr means "no special support": callers then
   // re-evaluate violation() with the variable changed, which is correct but O(arity).
   virtual std::unique_ptr<IncrementalState> make_incremental_state(

@@ -9,7 +9,7 @@
 // File form: {kind: abs_deviation, scope: [x, y], coefficients: [1, -1], constant: 0, target: 2}
 #pragma once
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/linear_form.h"
 #include "sightline/csp/kinds/number_or_parameter.h"
 

@@ -1,5 +1,5 @@
 // Registration of the built-in constraint kinds: one line per kind.
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/abs_deviation.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/expression.h"

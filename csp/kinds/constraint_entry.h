@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/problem.h"
 
 namespace sightline::csp {

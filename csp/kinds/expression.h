@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/parameters.h"
 
 namespace sightline::csp {

@@ -10,7 +10,7 @@
 // (quote ">=": a bare > starts a folded block in YAML; `le`, `eq`, `ge` are accepted too).
 #pragma once
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/linear_form.h"
 #include "sightline/csp/kinds/number_or_parameter.h"
 

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "sightline/csp/constraint.h"
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 
 namespace sightline::csp {
 

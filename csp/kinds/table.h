@@ -44,7 +44,7 @@
 #include <vector>
 
 #include "sightline/csp/constraint.h"
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 
 namespace sightline::csp {
 

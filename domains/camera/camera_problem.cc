@@ -3,13 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/constraint_entry.h"
 #include "sightline/domains/camera/constraints/camera_constraint_kinds.h"
-#include "sightline/domains/camera/constraints/clearance.h"
-#include "sightline/domains/camera/constraints/future_visibility.h"
-#include "sightline/domains/camera/constraints/occlusion.h"
-#include "sightline/domains/camera/constraints/smooth_constraints.h"
 
 namespace sightline::camera {
 
@@ -40,43 +36,30 @@ CameraProblem::CameraProblem(const Scene& scene, const CameraProfile& profile)
   p.add_variable("cam_z", csp::Domain::real_interval(start.z() - h, start.z() + h));
   frame_ = FrameParameters::add_to(p.parameters());
 
-  auto add = [&](std::unique_ptr<csp::Constraint> c, const char* label) {
-    c->set_label(label);
-    return p.add_constraint(std::move(c));
-  };
-  ids_.height = add(std::make_unique<HeightConstraint>(kCamY, frame_, profile.height.weight),
-                    "height");
-  ids_.distance = add(
-      std::make_unique<DistanceConstraint>(kCamX, kCamZ, frame_, profile.distance.weight),
-      "distance");
-  ids_.orientation = add(
-      std::make_unique<OrientationConstraint>(kCamX, kCamZ, frame_, profile.orientation.weight),
-      "orientation");
-  ids_.frame_coherence = add(std::make_unique<FrameCoherenceConstraint>(
-                                 kCamX, kCamY, kCamZ, frame_, profile.frame_coherence_weight),
-                             "frame coherence");
-  ids_.look_at = add(std::make_unique<LookAtVisibleConstraint>(
-                         kCamX, kCamY, kCamZ, *at_time_, frame_, profile.look_at_weight,
-                         profile.look_at_hard),
-                     "look-at visible");
-  if (profile.visible_fraction_weight > 0) {
-    ids_.visible_fraction =
-        add(std::make_unique<BodyVisibilityConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
-                                                       profile.visible_fraction_weight),
-            "body visible");
-  }
-  ids_.clearance = add(std::make_unique<ClearanceConstraint>(kCamX, kCamY, kCamZ, *at_time_, frame_,
-                                                             profile.clearance_weight,
-                                                             profile.clearance_hard),
-                       "clearance");
-  if (profile.anticipation.lookahead != Lookahead::kNone && profile.anticipation.weight > 0) {
-    ids_.future_visible = add(std::make_unique<FutureVisibleConstraint>(
-                                  kCamX, kCamY, kCamZ, *prediction_, profile.anticipation.weight),
-                              "future visible");
+  // The profile's terms, each a registered camera kind (camera_constraint_kinds.h).
+  const CameraConstraintContext context{*at_time_, frame_, *prediction_, kCamX, kCamY, kCamZ};
+  for (const CameraConstraintKind* kind : CameraConstraintKinds::global().profile_terms()) {
+    std::unique_ptr<csp::Constraint> c = kind->from_profile(context, profile);
+    if (!c) continue;
+    c->set_label(kind->label.empty() ? kind->name : kind->label);
+    record(kind->name, p.add_constraint(std::move(c)));
   }
   add_extras();
   // A meaningful first frame: the scene's start, one frame interval.
   set_frame(first, start, 1.0 / scene.frame_rate());
+}
+
+// Where the problem keeps the id of one of the profile's terms (ids()); others are extras.
+void CameraProblem::record(std::string_view kind, csp::ConstraintId id) {
+  if (kind == "camera.height") ids_.height = id;
+  else if (kind == "camera.distance") ids_.distance = id;
+  else if (kind == "camera.orientation") ids_.orientation = id;
+  else if (kind == "camera.frame_coherence") ids_.frame_coherence = id;
+  else if (kind == "camera.look_at_visible") ids_.look_at = id;
+  else if (kind == "camera.clearance") ids_.clearance = id;
+  else if (kind == "camera.visible_fraction") ids_.visible_fraction = id;
+  else if (kind == "camera.future_visible") ids_.future_visible = id;
+  else ids_.extras.push_back(id);
 }
 
 // A registered camera constraint kind (constraints/camera_constraint_kinds.h): it gets the
@@ -87,7 +70,7 @@ void CameraProblem::add_camera_kind(const CameraConstraintKind& kind, const csp:
   entry.check_keys(keys);
   const CameraConstraintContext context{*at_time_, frame_, *prediction_, kCamX, kCamY, kCamZ};
   std::unique_ptr<csp::Constraint> constraint = kind.make(context, entry);
-  constraint->set_label(kind.name);
+  constraint->set_label(kind.label.empty() ? kind.name : kind.label);
   try {
     ids_.extras.push_back(problem_->add_constraint(std::move(constraint)));
   } catch (const std::invalid_argument& e) {

@@ -5,7 +5,8 @@
 // search cube of half-size profile.search_half_size around the last camera position (thesis
 // section 3.1: "the domains of the variables define a cube ... where the camera can be
 // positioned for the next frame"). Parameters: the FrameParameters (char_x .. clearance_radius).
-// Constraints, from the profile:
+// Constraints, from the profile, each a registered camera kind built by its from_profile
+// (constraints/camera_constraint_kinds.h), in the registry's order:
 //   soft  camera.height, camera.distance, camera.orientation, camera.frame_coherence
 //   hard  camera.look_at_visible (soft when profile.look_at_hard is false)
 //   soft  camera.visible_fraction (left out when its weight is 0)
@@ -28,6 +29,7 @@
 #include <Eigen/Core>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "sightline/csp/problem.h"
@@ -94,6 +96,7 @@ class CameraProblem {
   static csp::Assignment assignment(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
  private:
+  void record(std::string_view kind, csp::ConstraintId id);
   void add_extras();
   void add_camera_kind(const CameraConstraintKind& kind, const csp::Spec& entry);
 

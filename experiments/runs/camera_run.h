@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sightline/domains/camera/control/chase_camera.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/experiments/runs/controllers.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/experiments/runs/metrics.h"
 #include "sightline/experiments/runs/trace.h"

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "sightline/csp/files/yaml_spec.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/experiments/runs/controllers.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"

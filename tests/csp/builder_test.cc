@@ -1,4 +1,4 @@
-#include "sightline/csp/builder.h"
+#include "sightline/csp/kinds/builder.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "sightline/csp/builder.h"
+#include "sightline/csp/kinds/builder.h"
 #include "sightline/csp/files/problem_file.h"
 #include "incremental_check.h"
 

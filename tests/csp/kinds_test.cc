@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "sightline/csp/builder.h"
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/builder.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/abs_deviation.h"
 #include "sightline/csp/kinds/linear.h"
 #include "sightline/csp/kinds/not_equal.h"

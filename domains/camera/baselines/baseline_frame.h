@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {

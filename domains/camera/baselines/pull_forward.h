@@ -24,7 +24,7 @@
 #include <string>
 
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {

@@ -22,7 +22,7 @@
 
 #include "sightline/domains/camera/baselines/sphere_probe.h"
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/scene.h"
 
 namespace sightline::camera {

@@ -30,6 +30,7 @@ class ClearanceConstraint : public csp::Constraint {
                       bool hard = true)
       : Constraint({cam_x, cam_y, cam_z}, weight, hard), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.clearance"; }
+  double query_cost() const override { return 4; }  // a nearest-surface query
   double violation(std::span<const double> values) const override;
   bool has_exact_gradient() const override { return true; }
   double violation_and_gradient(std::span<const double> values,

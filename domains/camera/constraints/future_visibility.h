@@ -20,23 +20,23 @@
 #pragma once
 
 #include "sightline/csp/constraint.h"
-#include "sightline/domains/camera/constraints/bounded_violation.h"
 #include "sightline/domains/camera/motion_prediction.h"
 
 namespace sightline::camera {
 
-class FutureVisibleConstraint : public csp::Constraint, public BoundedViolation {
+class FutureVisibleConstraint : public csp::Constraint {
  public:
   FutureVisibleConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
                           const MotionPrediction& prediction, double weight)
       : Constraint({cam_x, cam_y, cam_z}, weight), prediction_(&prediction) {}
   std::string_view kind() const override { return "camera.future_visible"; }
+  double query_cost() const override { return 2; }  // K sight lines, asked as one packet
   const MotionPrediction& prediction() const { return *prediction_; }
   double violation(std::span<const double> values) const override;
   double violation_and_gradient(std::span<const double> values,
                                 std::span<double> gradient) const override;
   bool has_exact_gradient() const override { return true; }
-  // Stops once the hidden samples' weight is enough (bounded_violation.h).
+  // Stops once the hidden samples' weight is enough (csp::Constraint::violation_until).
   double violation_until(std::span<const double> values, double cost_before, double bound,
                          double cost_after) const override;
 

@@ -26,7 +26,6 @@
 #include <array>
 
 #include "sightline/csp/constraint.h"
-#include "sightline/domains/camera/constraints/bounded_violation.h"
 #include "sightline/domains/camera/constraints/frame_parameters.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/domains/camera/scene_at_time.h"
@@ -59,6 +58,7 @@ class LookAtVisibleConstraint : public csp::Constraint {
                           bool hard = true)
       : Constraint({cam_x, cam_y, cam_z}, weight, hard), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.look_at_visible"; }
+  double query_cost() const override { return 1; }  // one sight line
   // The geometry the sight line is tested against, at the frame's time (camera-aware
   // solvers use it).
   const SceneAtTime& scene() const { return *scene_; }
@@ -75,13 +75,14 @@ class LookAtVisibleConstraint : public csp::Constraint {
 };
 
 // Violation 1 - visible fraction of the character's body. Scope (cam_x, cam_y, cam_z).
-// violation_until stops counting once enough samples are hidden (bounded_violation.h).
-class BodyVisibilityConstraint : public csp::Constraint, public BoundedViolation {
+// violation_until stops counting once enough samples are hidden (csp::Constraint::violation_until).
+class BodyVisibilityConstraint : public csp::Constraint {
  public:
   BodyVisibilityConstraint(csp::VariableId cam_x, csp::VariableId cam_y, csp::VariableId cam_z,
                            const SceneAtTime& scene, const FrameParameters& frame, double weight)
       : Constraint({cam_x, cam_y, cam_z}, weight), scene_(&scene), frame_(frame) {}
   std::string_view kind() const override { return "camera.visible_fraction"; }
+  double query_cost() const override { return 3; }  // nine sight lines
   double violation(std::span<const double> values) const override;
   double violation_and_gradient(std::span<const double> values,
                                 std::span<double> gradient) const override;

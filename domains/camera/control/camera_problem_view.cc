@@ -8,31 +8,33 @@ std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& pro
                                                          std::string* why) {
   CameraProblemView view;
   bool has_look_at = false, has_orientation = false, has_height = false;
+  // By type, not by name: the pieces the octree searches steer by. Every other constraint
+  // is scored as it is, the cheap ones (no queries of the world) first.
   for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const csp::Constraint& c = problem.constraint(id);
-    const std::string_view kind = c.kind();
-    if (kind == "camera.look_at_visible") {
-      const auto* look = dynamic_cast<const LookAtVisibleConstraint*>(&c);
-      if (!look) continue;
+    if (const auto* look = dynamic_cast<const LookAtVisibleConstraint*>(&c); look && !has_look_at) {
       view.scene_ = &look->scene();
       view.look_at_id_ = id;
       has_look_at = true;
       view.expensive_.insert(view.expensive_.begin(), id);  // one ray: first of the expensive
-    } else if (kind == "camera.visible_fraction" || kind == "camera.clearance" ||
-               kind == "camera.future_visible") {
-      view.expensive_.push_back(id);
-    } else {
-      if (kind == "camera.orientation") {
-        view.orientation_ = dynamic_cast<const OrientationConstraint*>(&c);
-        view.orientation_id_ = id;
-        has_orientation = view.orientation_ != nullptr;
-      } else if (kind == "camera.height") {
-        view.height_ = dynamic_cast<const HeightConstraint*>(&c);
-        view.height_id_ = id;
-        has_height = view.height_ != nullptr;
-      }
-      view.cheap_.push_back(id);
+      continue;
     }
+    if (c.query_cost() > 0) {
+      view.expensive_.push_back(id);
+      continue;
+    }
+    if (const auto* orientation = dynamic_cast<const OrientationConstraint*>(&c);
+        orientation && !has_orientation) {
+      view.orientation_ = orientation;
+      view.orientation_id_ = id;
+      has_orientation = true;
+    } else if (const auto* height = dynamic_cast<const HeightConstraint*>(&c);
+               height && !has_height) {
+      view.height_ = height;
+      view.height_id_ = id;
+      has_height = true;
+    }
+    view.cheap_.push_back(id);
   }
   const csp::Parameters& p = problem.parameters();
   const auto look = p.find("look_x"), ch = p.find("char_x"), yaw = p.find("char_yaw");
@@ -40,10 +42,6 @@ std::optional<CameraProblemView> CameraProblemView::find(const csp::Problem& pro
       problem.num_variables() != 3) {
     if (why) *why = "needs a camera problem (cam_x, cam_y, cam_z with the camera constraints)";
     return std::nullopt;
-  }
-  for (csp::ConstraintId id : view.expensive_) {
-    view.expensive_bounded_.push_back(
-        dynamic_cast<const BoundedViolation*>(&problem.constraint(id)));
   }
   view.look_x_ = *look;
   view.char_x_ = *ch;

@@ -3,8 +3,8 @@
 // Solvers are created by name and see only a csp::Problem. The camera's octree solvers
 // (Bourne's and Ali's) need more than a cost: the character's look-at point, the
 // orientation term (to sweep its desired value), the sight-line test and the scene. This
-// view finds those pieces by the constraints' registered kinds and the frame's parameter
-// names, so the solvers work on any problem built by CameraProblem (with or without extras)
+// view finds those pieces by the constraints' types, the rest by what each says it costs
+// (csp::Constraint::query_cost), and the frame's parameters by name, so the solvers work on any problem built by CameraProblem (with or without extras)
 // and politely refuse any other.
 #pragma once
 
@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "sightline/csp/problem.h"
-#include "sightline/domains/camera/constraints/bounded_violation.h"
 #include "sightline/domains/camera/constraints/occlusion.h"
 #include "sightline/domains/camera/constraints/smooth_constraints.h"
 #include "sightline/domains/camera/scene.h"
@@ -33,14 +32,11 @@ class CameraProblemView {
   const HeightConstraint& height() const { return *height_; }
   csp::ConstraintId height_id() const { return height_id_; }
   csp::ConstraintId look_at_id() const { return look_at_id_; }
-  // Constraints a candidate is scored with, cheapest first; the sight-line and body
-  // visibility tests (several BVH queries each) come last so a search can stop early.
+  // Constraints a candidate is scored with: cheap() ask nothing of the world
+  // (query_cost() 0); expensive() do (sight lines, clearance), the look-at test first, then
+  // in the problem's order, so a search can stop early.
   const std::vector<csp::ConstraintId>& cheap() const { return cheap_; }
   const std::vector<csp::ConstraintId>& expensive() const { return expensive_; }
-  // For each of expensive(): its BoundedViolation interface, or null (bounded_violation.h).
-  const std::vector<const BoundedViolation*>& expensive_bounded() const {
-    return expensive_bounded_;
-  }
 
   // Frame parameters, read live.
   Eigen::Vector3d look_at(const csp::Problem& problem) const;
@@ -53,7 +49,6 @@ class CameraProblemView {
   const HeightConstraint* height_ = nullptr;
   csp::ConstraintId orientation_id_ = 0, height_id_ = 0, look_at_id_ = 0;
   std::vector<csp::ConstraintId> cheap_, expensive_;
-  std::vector<const BoundedViolation*> expensive_bounded_;
   std::size_t look_x_ = 0, char_x_ = 0, char_yaw_ = 0;
 };
 

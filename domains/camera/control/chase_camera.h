@@ -59,7 +59,7 @@
 #include <vector>
 
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/control/horizon_planner.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/solvers/registry.h"

@@ -3,22 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string_view>
 
 namespace sightline::camera {
-
-namespace {
-
-// Where a constraint comes in the order the expensive ones are asked in (see the header).
-int ask_rank(std::string_view kind) {
-  if (kind == "camera.look_at_visible") return 0;
-  if (kind == "camera.future_visible") return 1;
-  if (kind == "camera.visible_fraction") return 2;
-  if (kind == "camera.clearance") return 4;
-  return 3;
-}
-
-}  // namespace
 
 OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView& view)
     : problem_(&problem), view_(&view) {
@@ -30,8 +16,8 @@ OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView&
   // (the city with 20 movers: 2-5% slower at p99 reordered); levels answer in packets.
   if (!view.scene().packs_sight_lines()) return;
   std::stable_sort(order_, order_ + expensive_count_, [&](int a, int b) {
-    return ask_rank(problem.constraint(expensive[static_cast<std::size_t>(a)]).kind()) <
-           ask_rank(problem.constraint(expensive[static_cast<std::size_t>(b)]).kind());
+    return problem.constraint(expensive[static_cast<std::size_t>(a)]).query_cost() <
+           problem.constraint(expensive[static_cast<std::size_t>(b)]).query_cost();
   });
 }
 
@@ -96,7 +82,7 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
   // The sight-line tests. Ali: a candidate counts only if the look-at point is visible from
   // it (whether the profile makes that constraint hard or soft), and only if it breaks no
   // hard constraint. Asked in order_ (see the header); the soft counts stop as soon as the
-  // candidate has lost (BoundedViolation): the same candidates survive, with the same sums.
+  // candidate has lost (csp::Constraint::violation_until): the same candidates survive, with the same sums.
   const std::vector<csp::ConstraintId>& expensive = view_->expensive();
   if (expensive_count_ > 0) {
     const double cheap_cost = out.cost;
@@ -105,12 +91,11 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
       const int i = order_[k];
       const csp::ConstraintId id = expensive[static_cast<std::size_t>(i)];
       const csp::Constraint& c = problem_->constraint(id);
-      const BoundedViolation* bounded = view_->expensive_bounded()[static_cast<std::size_t>(i)];
       double violation;
-      if (bounded && !c.is_hard()) {
+      if (!c.is_hard()) {
         double after = 0;
         const double before = known_cost(cheap_cost, i, &after);
-        violation = bounded->violation_until(x, before, bound, after);
+        violation = c.violation_until(x, before, bound, after);
       } else {
         violation = c.violation(x);
       }
@@ -129,10 +114,8 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
   for (std::size_t i = 0; i < expensive.size(); ++i) {
     const csp::ConstraintId id = expensive[i];
     const csp::Constraint& c = problem_->constraint(id);
-    const BoundedViolation* bounded = view_->expensive_bounded()[i];
-    const double violation = bounded && !c.is_hard()
-                                 ? bounded->violation_until(x, out.cost, bound, 0.0)
-                                 : c.violation(x);
+    const double violation =
+        c.is_hard() ? c.violation(x) : c.violation_until(x, out.cost, bound, 0.0);
     if (violation > 0 && (id == view_->look_at_id() || c.is_hard())) return out;
     if (c.is_hard()) continue;
     out.cost += c.weight() * violation;

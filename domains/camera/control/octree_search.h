@@ -13,11 +13,12 @@
 //     handled nominally).
 // Scoring evaluates the cheap constraints first and stops as soon as a candidate cannot beat
 // the best one, so the sight-line queries run only for candidates that matter; the body and
-// future visibility counts stop mid-way too (BoundedViolation).
+// future visibility counts stop mid-way too (csp::Constraint::violation_until).
 // On a level (sight lines answered as Embree ray packets), the expensive constraints are
-// asked in the order that drops losing candidates soonest, not in the problem's order: the
-// look-at sight line (one ray, hard), then the future visibility (K rays), the body
-// visibility (9 rays), and clearance (a point query and the map's solid volume) last. On box
+// asked in the order that drops losing candidates soonest, not in the problem's order: by
+// what each says it costs (csp::Constraint::query_cost): the look-at sight line (one ray,
+// hard), then the future visibility (K rays in a packet), the body visibility (9 rays),
+// and clearance (a point query and the map's solid volume) last. On box
 // scenes the view's order stays (reordered, the city with 20 movers measured 2-5% slower).
 // In the slowest 2% of frames on oa_thor-walk4, asked in the problem's order, 44% of the
 // candidates that reach these tests were dropped by the future visibility, after paying for

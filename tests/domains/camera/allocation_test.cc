@@ -12,7 +12,6 @@
 #include <new>
 
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/constraints/bounded_violation.h"
 #include "sightline/domains/camera/constraints/occlusion.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
@@ -128,11 +127,8 @@ TEST(CameraFramePath, OnALevelWithAnticipationAllocatesNothing) {
   CameraProblem cp(scene, profile);
   ASSERT_TRUE(cp.ids().future_visible.has_value() && cp.ids().visible_fraction.has_value());
   ASSERT_TRUE(cp.scene_at_time().packs_sight_lines());
-  const auto* body = dynamic_cast<const BoundedViolation*>(
-      &cp.problem().constraint(*cp.ids().visible_fraction));
-  const auto* future = dynamic_cast<const BoundedViolation*>(
-      &cp.problem().constraint(*cp.ids().future_visible));
-  ASSERT_TRUE(body != nullptr && future != nullptr);
+  const csp::Constraint* body = &cp.problem().constraint(*cp.ids().visible_fraction);
+  const csp::Constraint* future = &cp.problem().constraint(*cp.ids().future_visible);
   std::vector<double> values(3);
   double total = 0;
   auto one_frame = [&](std::size_t frame) {

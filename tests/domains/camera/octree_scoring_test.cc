@@ -1,5 +1,5 @@
 // How the octree solvers score a candidate cheaply without scoring it differently:
-//   - BoundedViolation (body visibility, future visibility): violation_until returns exactly
+//   - violation_until (body visibility, future visibility): violation_until returns exactly
 //     violation() unless the candidate has lost, and then a lower bound that proves it lost
 //     (with a cost known to come after it in the sum, too);
 //   - OctreeSearch::evaluate (soft sight-line counts stopped early, the expensive constraints
@@ -17,7 +17,6 @@
 #include <string>
 
 #include "sightline/domains/camera/camera_problem.h"
-#include "sightline/domains/camera/constraints/bounded_violation.h"
 #include "sightline/domains/camera/control/camera_problem_view.h"
 #include "sightline/domains/camera/control/octree_search.h"
 #include "sightline/domains/camera/profile_file.h"
@@ -99,15 +98,13 @@ TEST_P(Bounded, IsTheViolationUnlessTheCandidateLostAndThenALowerBoundThatProves
     const double values[3] = {p.x(), p.y(), p.z()};
     for (csp::ConstraintId id : {*cp.ids().visible_fraction, *cp.ids().future_visible}) {
       const csp::Constraint& c = problem.constraint(id);
-      const auto* bounded = dynamic_cast<const BoundedViolation*>(&c);
-      ASSERT_NE(bounded, nullptr) << c.kind();
       const double full = c.violation(values);
       const double before = 3 * u(rng);
       // Half the time a term known to come after it in the sum (a search asking out of order).
       const double after = u(rng) < 0.5 ? 0.0 : 2 * u(rng);
       const double bound = u(rng) < 0.1 ? std::numeric_limits<double>::infinity()
                                         : before + after + c.weight() * u(rng) * 1.2;
-      const double got = bounded->violation_until(values, before, bound, after);
+      const double got = c.violation_until(values, before, bound, after);
       if ((before + c.weight() * full) + after < bound) {
         ASSERT_EQ(got, full) << c.kind() << " trial " << trial;  // bit for bit
         ++exact;

@@ -11,7 +11,7 @@
 #include <map>
 #include <random>
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/incremental_evaluator.h"
 #include "sightline/csp/problem.h"
 

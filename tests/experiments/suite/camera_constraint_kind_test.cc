@@ -39,12 +39,15 @@ class KeepAbove : public csp::Constraint {
 void register_keep_above() {
   camera::CameraConstraintKinds& kinds = camera::CameraConstraintKinds::global();
   if (kinds.find("test.keep_above")) return;
-  kinds.add({"test.keep_above", "the camera at least `above` metres high (a test's own)", {"above"},
-             [](const camera::CameraConstraintContext& c, const csp::Spec& entry) {
-               return std::make_unique<KeepAbove>(
-                   c, entry.at("above").as_number("a height"), csp::read_weight(entry),
-                   csp::read_hard(entry));
-             }});
+  camera::CameraConstraintKind kind;
+  kind.name = "test.keep_above";
+  kind.description = "the camera at least `above` metres high (a test's own)";
+  kind.fields = {"above"};
+  kind.make = [](const camera::CameraConstraintContext& c, const csp::Spec& entry) {
+    return std::make_unique<KeepAbove>(c, entry.at("above").as_number("a height"),
+                                       csp::read_weight(entry), csp::read_hard(entry));
+  };
+  kinds.add(std::move(kind));
 }
 
 double mean_camera_height(const std::string& trace_path) {

@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-#include "brute_force.h"
+#include "tests/csp/brute_force.h"
 #include "sightline/csp/files/wcsp_reader.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/not_equal.h"

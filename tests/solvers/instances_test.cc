@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "sightline/csp/files/wcsp_reader.h"
-#include "reference_wcsp.h"
+#include "tests/csp/files/reference_wcsp.h"
 #include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {

@@ -1,4 +1,4 @@
-// The .cfn reader: every instance written as .cfn (tests/wcsp/wcsp_to_cfn.h, with named values,
+// The .cfn reader: every instance written as .cfn (tests/csp/files/wcsp_to_cfn.h, with named values,
 // dense and sparse tables, costs as strings) reads into a problem that scores random
 // assignments as its .wcsp twin and as the independent evaluator of toulbar2's semantics do;
 // a hand-written file using the format's other features scores every assignment as the
@@ -26,7 +26,7 @@ namespace sightline::csp {
 namespace {
 
 const std::string kDataDir = std::string(SIGHTLINE_SHARED_DIR) + "/data/wcsp/";
-const std::string kOwnData = std::string(SIGHTLINE_SOURCE_DIR) + "/tests/wcsp/data/";
+const std::string kOwnData = std::string(SIGHTLINE_SOURCE_DIR) + "/tests/csp/files/data/";
 const std::vector<std::string> kInstances = {
     "4queens", "base2",  "example", "golomb4", "magic3",    "oconnell",
     "sudoku",  "warehouse", "zebra", "latin4",  "zebre-ext", "geom40_6"};
@@ -95,7 +95,7 @@ TEST(CfnReader, ReadsGzippedFiles) {
                      rng);
 }
 
-// tests/wcsp/data/tiny.cfn, by the format's rules (UB 100: a cost >= 100 is forbidden):
+// tests/csp/files/data/tiny.cfn, by the format's rules (UB 100: a cost >= 100 is forbidden):
 //   likes(colour, size): default 1.5, (red, 0) 0, (blue, 1) 4.25
 //   pairs(size, shape), dense: (0,0) 0, (0,1) 2, (1,0) 3, (1,1) 100 forbidden
 //   echo(shape, size): pairs' table on (shape, size)

@@ -1,4 +1,4 @@
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 
 #include <stdexcept>
 

@@ -1,24 +1,11 @@
-#include "sightline/domains/camera/control/camera_controller.h"
+#include "sightline/experiments/runs/controllers.h"
 
 #include <stdexcept>
 
 #include "sightline/domains/camera/baselines/pull_forward.h"
 #include "sightline/domains/camera/baselines/spring_arm.h"
-#include "sightline/domains/camera/control/chase_camera.h"
 
 namespace sightline::camera {
-
-const char* to_string(CutReason reason) {
-  switch (reason) {
-    case CutReason::kNone: return "none";
-    case CutReason::kLeftEnclosedArea: return "left an enclosed area";
-    case CutReason::kBackedUpToObstacle: return "backed up to an obstacle";
-    case CutReason::kVisibilityLost: return "no smooth move keeps the character visible";
-    case CutReason::kStuck: return "stuck behind an obstacle";
-    case CutReason::kTooFast: return "moved faster than smooth motion allows";
-  }
-  return "?";
-}
 
 std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
                                                   const CameraProfile& profile,

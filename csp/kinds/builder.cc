@@ -1,9 +1,9 @@
-#include "sightline/csp/builder.h"
+#include "sightline/csp/kinds/builder.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "sightline/csp/constraint_kinds.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/constraint_entry.h"
 
 namespace sightline::csp {

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <random>
 
-#include "brute_force.h"
+#include "tests/csp/brute_force.h"
 #include "sightline/csp/files/wcsp_reader.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/linear.h"

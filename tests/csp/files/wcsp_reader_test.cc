@@ -17,7 +17,7 @@
 #include <random>
 #include <sstream>
 
-#include "brute_force.h"
+#include "tests/csp/brute_force.h"
 #include "sightline/csp/input_error.h"
 #include "reference_wcsp.h"
 

@@ -14,7 +14,7 @@
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/independent_check.h"
-#include "tests/domains/camera_control/independent_judge.h"
+#include "tests/domains/camera/control/independent_judge.h"
 #include "sightline/experiments/sources/scene_files.h"
 
 namespace sightline {

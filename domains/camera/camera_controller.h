@@ -2,8 +2,9 @@
 // constraint camera and the baselines games ship (spring arm, pull-forward) run through the
 // same experiments, traces and metrics.
 //
-// make_controller() creates one by name: "spring-arm" and "pull-forward" are the baselines
-// (domains/camera/baselines/); any other name is a solver or pipeline driving a ChaseCamera.
+// It sits in the camera domain, below both implementations: the constraint camera
+// (control/) and the baselines (baselines/); experiments/runs/controllers.h creates either
+// by name.
 #pragma once
 
 #include <Eigen/Core>
@@ -48,14 +49,5 @@ class CameraController {
   // The largest move a frame of length dt makes without being a cut.
   virtual double max_step(double dt) const = 0;
 };
-
-struct ChaseCameraOptions;
-
-// "spring-arm", "pull-forward", or a solver/pipeline name for a ChaseCamera (`options.solver`
-// is replaced by `name`). Throws solvers::OptionError / std::invalid_argument for bad names
-// or options.
-std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
-                                                  const CameraProfile& profile,
-                                                  const ChaseCameraOptions& options);
 
 }  // namespace sightline::camera

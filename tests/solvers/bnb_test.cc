@@ -8,7 +8,7 @@
 #include <random>
 #include <regex>
 
-#include "brute_force.h"
+#include "tests/csp/brute_force.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/not_equal.h"
 #include "sightline/csp/kinds/table.h"
