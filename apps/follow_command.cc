@@ -32,6 +32,11 @@ struct FollowOptions {
 
 void run_follow(const FollowOptions& o) {
   camera::Scene scene = camera::read_scene_file(o.scene);
+  if (scene.shot()) {
+    throw std::invalid_argument(
+        o.scene + ": the scene has a shot: block; filming it as a tracking shot is not built "
+        "yet (`sightline compose` solves the shot at one instant)");
+  }
   camera::CameraProfile profile = scene.profile();
   if (!o.profile.empty()) {
     profile = camera::is_preset(o.profile) ? camera::preset_profile(o.profile)

@@ -7,6 +7,7 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
+#include "sightline/domains/camera/composition/composition_solvers.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/solvers/toulbar2/toulbar2_solver.h"
 
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
   namespace apps = sightline::apps;
   // The camera's own solvers join the one registry, so every command can name them.
   sightline::camera::solver_registry();
+  sightline::camera::register_composition_solvers(sightline::solvers::SolverRegistry::global());
   // toulbar2 joins it when its program is installed (solvers/toulbar2/toulbar2_solver.h).
   sightline::solvers::register_toulbar2_solver(sightline::solvers::SolverRegistry::global());
   CLI::App app{"sightline: weighted constraint satisfaction with pluggable solvers"};
@@ -28,6 +30,7 @@ int main(int argc, char** argv) {
   apps::add_run_command(app);
   apps::add_scene_command(app);
   apps::add_follow_command(app);
+  apps::add_compose_command(app);
   apps::add_level_command(app);
   apps::add_view_command(app);
   try {

@@ -98,6 +98,9 @@ struct NearestSurface {
   Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
 };
 
+struct Shot;         // composition/shot.h: a scene's shot: block (the camera domain only
+struct ScriptEntry;  // holds them), its named shots and its script
+
 class Scene {
  public:
   Scene(std::string name, std::vector<SolidBox> solids, std::vector<Area> areas,
@@ -112,6 +115,25 @@ class Scene {
   const std::vector<Area>& areas() const { return areas_; }
   const CharacterShape& character() const { return character_; }
   const Trajectory& trajectory() const { return trajectory_; }
+  // Whether someone is chased (FORMATS.md "Actors": a scene framed by a shot: block may have
+  // nobody chased; its trajectory() is then the first target's, for the frames' times and
+  // the trace's char_* columns, and character() is not a person of the scene).
+  bool has_character() const { return has_character_; }
+  // The followed character's name among the people: "character".
+  const std::string& character_name() const { return character_name_; }
+  void set_no_character() { has_character_ = false; }
+
+  // The scene's shot: block (FORMATS.md "Shots"), or null: the camera then chases.
+  const Shot* shot() const { return shot_.get(); }
+  void set_shot(std::shared_ptr<const Shot> shot) { shot_ = std::move(shot); }
+  // The scene's named shots (shots:) and script (script:), for an editor; empty without.
+  const std::vector<std::shared_ptr<const Shot>>& named_shots() const { return named_shots_; }
+  const std::vector<ScriptEntry>* script() const { return script_.get(); }
+  void set_direction(std::vector<std::shared_ptr<const Shot>> named_shots,
+                     std::shared_ptr<const std::vector<ScriptEntry>> script) {
+    named_shots_ = std::move(named_shots);
+    script_ = std::move(script);
+  }
   // Bounds of the solid boxes, the level, the areas and the movers' swept boxes (Aabb::empty() when there are none).
   Aabb world_bounds() const;
 
@@ -218,6 +240,11 @@ class Scene {
   // Shared, so scenes stay copyable; never null (empty without a level).
   std::shared_ptr<const TriangleIndex> triangles_;
   std::shared_ptr<const sightline::World> world_;
+  std::shared_ptr<const Shot> shot_;
+  std::vector<std::shared_ptr<const Shot>> named_shots_;
+  std::shared_ptr<const std::vector<ScriptEntry>> script_;
+  bool has_character_ = true;
+  std::string character_name_ = "character";
 };
 
 }  // namespace sightline::camera

@@ -9,6 +9,7 @@
 
 #include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/camera_problem.h"
+#include "sightline/domains/camera/composition/shot.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/spec_reading.h"
 
@@ -311,12 +312,46 @@ void check_trajectory(const Scene& scene, const std::vector<csp::SourceLocation>
   }
 }
 
+// The people a shot or a script may name: the followed character (when someone is chased)
+// and the actors.
+std::vector<std::string> people_of(const Scene& scene) {
+  std::vector<std::string> names;
+  if (scene.has_character()) names.push_back(scene.character_name());
+  for (const Actor& a : scene.actors()) names.push_back(a.name);
+  return names;
+}
+
+// shot:, shots: and script: (FORMATS.md "Shots", "Script and named shots").
+void read_direction(const Spec& spec, Scene& scene) {
+  const std::vector<std::string> people = people_of(scene);
+  if (const Spec* shot = spec.find("shot")) {
+    scene.set_shot(std::make_shared<const Shot>(read_shot(*shot, people)));
+  }
+  std::vector<std::shared_ptr<const Shot>> named;
+  std::map<std::string, int> lines;
+  for (const Spec& entry : optional_list(spec, "shots", "a list of named shots")) {
+    if (!entry.is_map()) entry.fail("expected a named shot {name: ..., region: ..., properties: [...]}");
+    auto shot = std::make_shared<const Shot>(read_shot(entry, people, true));
+    if (const auto it = lines.find(shot->name); it != lines.end()) {
+      entry.at("name").fail("shot name '" + shot->name + "' is taken by the shot on line " +
+                            std::to_string(it->second));
+    }
+    lines[shot->name] = entry.where().line;
+    named.push_back(std::move(shot));
+  }
+  std::shared_ptr<const std::vector<ScriptEntry>> script;
+  if (const Spec* s = spec.find("script"); s != nullptr && !s->is_null()) {
+    script = std::make_shared<const std::vector<ScriptEntry>>(read_script(*s, people));
+  }
+  scene.set_direction(std::move(named), std::move(script));
+}
+
 }  // namespace
 
 Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   if (!spec.is_map()) spec.fail("expected a scene (a mapping with name, boxes, trajectory ...)");
   spec.check_keys({"name", "description", "frame_rate", "character", "level", "boxes", "areas",
-                   "movers", "actors", "trajectory", "camera"});
+                   "movers", "actors", "trajectory", "camera", "shot", "shots", "script"});
   const std::string name = spec.at("name").as_string("the scene's name");
   if (name.empty()) spec.at("name").fail("expected a non-empty scene name");
   double frame_rate = 60;
@@ -331,6 +366,7 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   std::vector<Actor> actors = read_actors(spec, trajectory_field != nullptr);
   std::vector<csp::SourceLocation> keyframe_where;
   Trajectory trajectory;
+  bool nobody_chased = false;
   if (trajectory_field != nullptr) {
     trajectory = Trajectory(read_keyframes(*trajectory_field, "", keyframe_where));
   } else {
@@ -338,19 +374,30 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
     const auto followed = std::find_if(actors.begin(), actors.end(),
                                        [](const Actor& a) { return a.name == "character"; });
     if (actors.empty()) spec.at("trajectory");  // missing required field 'trajectory'
-    if (followed == actors.end()) {
-      spec.fail("expected a trajectory: or an actor named 'character' to follow; a scene whose "
-                "actors are framed by a shot: block instead is valid by FORMATS.md, but this "
-                "version does not read shot: blocks yet");
-    }
     if (spec.find("character")) {
       spec.at("character").fail("the character is the actor named 'character' here: give its "
                                 "size and look_at_height there, not in a character: block");
     }
-    character = followed->shape;
-    trajectory = followed->trajectory;
-    keyframe_where = followed->keyframe_where;
-    actors.erase(followed);
+    if (followed != actors.end()) {
+      character = followed->shape;
+      trajectory = followed->trajectory;
+      keyframe_where = followed->keyframe_where;
+      actors.erase(followed);
+    } else if (const Spec* shot = spec.find("shot")) {
+      // Nobody is chased: the frames follow the shot's first target (FORMATS.md "Actors").
+      std::vector<std::string> names;
+      for (const Actor& a : actors) names.push_back(a.name);
+      const std::string first = read_shot(*shot, names).targets().front();
+      const auto target = std::find_if(actors.begin(), actors.end(),
+                                       [&](const Actor& a) { return a.name == first; });
+      character = target->shape;
+      trajectory = target->trajectory;
+      keyframe_where = target->keyframe_where;
+      nobody_chased = true;
+    } else {
+      spec.fail("expected a trajectory: (the character's), an actor named 'character' to "
+                "follow, or a shot: block framing the actors (FORMATS.md \"Actors\")");
+    }
   }
   if (trajectory.duration() * frame_rate > kMaxSceneFrames) {
     (trajectory_field ? *trajectory_field : spec).fail("the trajectory lasts " + format_number(trajectory.duration()) +
@@ -365,7 +412,9 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   scene.set_level(std::move(level));
   scene.set_movers(std::move(movers));
   scene.set_actors(std::move(actors));
+  if (nobody_chased) scene.set_no_character();
   if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
+  read_direction(spec, scene);
 
   const Spec* camera = spec.find("camera");
   if (camera != nullptr && !camera->is_null()) {

@@ -1,0 +1,136 @@
+// `sightline compose SCENE.yaml [--solver NAME] [--time T] [--budget-ms MS] [--pose OUT.json]`
+// (FORMATS.md "The compose command"): solves the scene's shot: at one instant, prints the
+// satisfaction and each property's score, writes the pose file; exits 0 when the pose is
+// feasible, 1 when the solver found none (saying which rule it breaks), 2 on bad input.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/commands.h"
+#include "apps/solve_options.h"
+#include "sightline/domains/camera/composition/composition_problem.h"
+#include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/composition/pose_file.h"
+#include "sightline/domains/camera/composition/shot.h"
+#include "sightline/domains/camera/scene_file.h"
+#include "sightline/solvers/registry.h"
+
+namespace sightline::apps {
+namespace {
+
+struct ComposeOptions {
+  std::string scene;
+  std::string solver = camera::kRecommendedCompositionSolver;
+  std::vector<std::string> settings;
+  double time = std::numeric_limits<double>::quiet_NaN();
+  double budget_ms = 20;
+  std::uint64_t seed = 1;
+  std::string pose;
+};
+
+// FORMATS.md: the default time is the earliest keyframe of any actor (or of the character).
+double earliest_keyframe(const camera::Scene& scene) {
+  double t = scene.trajectory().start_time();
+  for (const camera::Actor& a : scene.actors()) t = std::min(t, a.trajectory.start_time());
+  return t;
+}
+
+std::string fixed(double v, int digits) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : (std::isnan(v) ? "undefined" : "-inf");
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+void run_compose(const ComposeOptions& o) {
+  const auto began = std::chrono::steady_clock::now();
+  const camera::Scene scene = camera::read_scene_file(o.scene);
+  if (!scene.shot()) {
+    throw std::invalid_argument(o.scene + ": the scene has no shot: block to compose "
+                                "(FORMATS.md \"Shots\")");
+  }
+  if (!(o.budget_ms > 0) || !std::isfinite(o.budget_ms)) {
+    throw std::invalid_argument("--budget-ms: expected a time in milliseconds > 0");
+  }
+  const double t = std::isnan(o.time) ? earliest_keyframe(scene) : o.time;
+  if (!std::isfinite(t)) throw std::invalid_argument("--time: expected a finite time in seconds");
+  camera::register_composition_solvers(solvers::SolverRegistry::global());
+  solvers::OptionValues values;
+  for (const std::string& s : o.settings) values.insert(solvers::split_option(s));
+  std::unique_ptr<solvers::Solver> solver = solvers::SolverRegistry::global().create(o.solver, values);
+  const camera::CompositionProblem composition(scene, *scene.shot(), t);
+  if (std::string why = solver->unsuitable_reason(composition.problem()); !why.empty()) {
+    throw std::invalid_argument("solver '" + o.solver + "' cannot compose this shot: " + why);
+  }
+  solvers::SolveContext context;
+  context.seed = o.seed;
+  context.limits.time_limit_seconds = o.budget_ms / 1000;
+  // The start: the middle of the region, looking at the shot's first target.
+  const camera::Shot& shot = *scene.shot();
+  camera::CameraPose start;
+  start.position = shot.region.centre();
+  start.look_at = composition.world().people()[static_cast<std::size_t>(
+                      composition.targets().front().front())].aim;
+  if ((start.look_at - start.position).norm() < 1e-6) start.look_at += Eigen::Vector3d::UnitZ();
+  start.fov = (shot.fov.lo + shot.fov.hi) / 2;
+  start.roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
+  start.aspect = shot.aspect;
+  const solvers::SolverResult result =
+      solver->solve(composition.problem(), composition.assignment(start), context);
+  const camera::CameraPose pose = composition.pose(result.best);
+  const camera::ShotEvaluation e = composition.evaluate(pose);
+  const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+
+  std::cout << "Shot of " << scene.name() << " at t = " << fixed(t, 3) << " s, " << o.solver
+            << " (" << fixed(o.budget_ms, 1) << " ms budget): satisfaction " << fixed(e.satisfaction, 4)
+            << ", " << (e.feasible ? "feasible" : "infeasible: " + e.why_infeasible) << ".\n";
+  std::cout << "  camera " << fixed(pose.position.x(), 3) << " " << fixed(pose.position.y(), 3)
+            << " " << fixed(pose.position.z(), 3) << ", looking at "
+            << fixed(pose.look_at.x(), 3) << " " << fixed(pose.look_at.y(), 3) << " "
+            << fixed(pose.look_at.z(), 3) << ", fov " << fixed(pose.fov, 2) << " deg, roll "
+            << fixed(pose.roll, 2) << " deg\n";
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const camera::ShotProperty& p = shot.properties[i];
+    std::cout << "  line " << p.where.line << "  " << p.describe() << ": measured "
+              << fixed(e.measures[i], 4) << ", score " << fixed(e.scores[i], 4)
+              << (p.hard ? " (hard)" : "") << "\n";
+  }
+  std::cout << "  solve " << fixed(result.wall_seconds * 1000, 2) << " ms, "
+            << result.evaluations << " evaluations; whole command " << fixed(whole * 1000, 1)
+            << " ms\n";
+  if (!o.pose.empty()) {
+    camera::PoseFileExtras extras{t, o.solver, result.wall_seconds};
+    std::ofstream out(o.pose);
+    out << camera::pose_json(pose, composition, e, extras);
+    if (!out) throw std::runtime_error("cannot write the pose file " + o.pose);
+    std::cout << "Pose written to " << o.pose << "\n";
+  }
+  if (!e.feasible) throw RunFailed("no feasible pose found: " + e.why_infeasible);
+}
+
+}  // namespace
+
+void add_compose_command(CLI::App& app) {
+  auto options = std::make_shared<ComposeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compose", "Solve a scene's shot: at one instant and write the camera's pose (JSON)");
+  cmd->add_option("scene", options->scene, "scene file with a shot: block (FORMATS.md)")->required();
+  cmd->add_option("--solver", options->solver,
+                  "registered solver or pipeline (default: shot-search, the recommended "
+                  "composition solver)");
+  cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
+  cmd->add_option("--time", options->time,
+                  "the shot's time in seconds (default: the earliest keyframe of any person)");
+  cmd->add_option("--budget-ms", options->budget_ms, "time budget of the solve (default 20 ms)");
+  cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
+  cmd->add_option("--pose", options->pose, "write the pose file (JSON) here");
+  cmd->callback([options] { run_compose(*options); });
+}
+
+}  // namespace sightline::apps

@@ -1,0 +1,160 @@
+#include "sightline/domains/camera/composition/composition_problem.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sightline/csp/input_error.h"
+
+namespace sightline::camera {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+constexpr double kClearanceProbe = 10;  // metres: how far evaluate() looks for the nearest solid
+
+}  // namespace
+
+CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, double t)
+    : shot_(&shot),
+      world_(std::make_unique<ShotWorld>(scene, t)),
+      problem_(std::make_unique<csp::Problem>("shot: " + scene.name())) {
+  csp::Problem& p = *problem_;
+  const Aabb& r = shot.region;
+  p.add_variable("cam_x", csp::Domain::real_interval(r.min.x(), r.max.x()));
+  p.add_variable("cam_y", csp::Domain::real_interval(r.min.y(), r.max.y()));
+  p.add_variable("cam_z", csp::Domain::real_interval(r.min.z(), r.max.z()));
+  p.add_variable("yaw", csp::Domain::real_interval(-180, 180));
+  p.add_variable("pitch", csp::Domain::real_interval(-89, 89));
+  p.add_variable("fov", csp::Domain::real_interval(shot.fov.lo, shot.fov.hi));
+  p.add_variable("roll", csp::Domain::real_interval(shot.roll.lo, shot.roll.hi));
+  targets_.reserve(shot.properties.size());
+  for (const ShotProperty& property : shot.properties) {
+    std::vector<int> ids;
+    for (const std::string& name : property.targets) {
+      const std::optional<int> id = world_->find(name);
+      if (!id) {
+        throw csp::InputError(property.where, "the shot's " + property.kind +
+                                                  " property names '" + name +
+                                                  "', who is not in the scene");
+      }
+      ids.push_back(*id);
+    }
+    targets_.push_back(std::move(ids));
+  }
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const ShotPropertyKind* kind = ShotPropertyKinds::global().find(shot.properties[i].kind);
+    if (!kind) {
+      throw csp::InputError(shot.properties[i].where,
+                            "unknown shot property kind '" + shot.properties[i].kind + "'");
+    }
+    auto c = std::make_unique<ShotPropertyConstraint>(*this, i, *kind);
+    c->set_label(shot.properties[i].describe());
+    p.add_constraint(std::move(c));
+  }
+  auto clearance = std::make_unique<ShotClearanceConstraint>(*this);
+  clearance->set_label("clearance");
+  p.add_constraint(std::move(clearance));
+}
+
+CameraPose CompositionProblem::pose(std::span<const double> v) const {
+  CameraPose pose;
+  pose.position = Eigen::Vector3d(v[kX], v[kY], v[kZ]);
+  pose.look_at = pose.position + direction_from_yaw_pitch(v[kYaw], v[kPitch]);
+  pose.fov = v[kFov];
+  pose.roll = v[kRoll];
+  pose.aspect = shot_->aspect;
+  return pose;
+}
+
+csp::Assignment CompositionProblem::assignment(const CameraPose& pose) const {
+  const Eigen::Vector3d d = (pose.look_at - pose.position).normalized();
+  csp::Assignment a{pose.position.x(), pose.position.y(), pose.position.z(),
+                    std::atan2(d.x(), d.z()) * kDegrees,
+                    std::asin(std::clamp(d.y(), -1.0, 1.0)) * kDegrees, pose.fov, pose.roll};
+  for (csp::VariableId v = 0; v < 7; ++v) a[v] = problem_->domain(v).clamp(a[v]);
+  return a;
+}
+
+ShotEvaluation CompositionProblem::evaluate(const CameraPose& pose) const {
+  ShotEvaluation e;
+  const std::size_t n = shot_->properties.size();
+  e.measures.assign(n, std::numeric_limits<double>::quiet_NaN());
+  e.scores.assign(n, 0.0);
+  const std::optional<View> view = View::of(pose);
+  if (!view) {
+    e.why_infeasible = "the pose has no view (its direction is vertical, or its lens is invalid)";
+    return e;
+  }
+  e.valid_pose = true;
+  double weights = 0, weighted = 0;
+  std::string first_hard;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ShotProperty& property = shot_->properties[i];
+    const ShotPropertyKind& kind = *ShotPropertyKinds::global().find(property.kind);
+    const MeasureContext context{*view, *world_, targets_[i].data()};
+    e.measures[i] = kind.measure(property, context);
+    e.scores[i] = satisfaction(e.measures[i], property.range, property.softness, kind.circular);
+    if (property.hard) {
+      if (e.scores[i] < 1 && first_hard.empty()) {
+        first_hard = "the hard property " + property.describe() + " (line " +
+                     std::to_string(property.where.line) + ") scores " +
+                     std::to_string(e.scores[i]);
+      }
+    } else {
+      weights += property.weight;
+      weighted += property.weight * e.scores[i];
+      e.cost += property.weight * (1 - e.scores[i]);
+    }
+  }
+  e.satisfaction = weights > 0 ? weighted / weights : 1.0;
+  e.clearance = world_->clearance(pose.position, kClearanceProbe);
+  const Aabb& r = shot_->region;
+  const auto in = [](double v, const ValueRange& range) { return v >= range.lo && v <= range.hi; };
+  if (!r.contains(pose.position)) {
+    e.why_infeasible = "the camera is outside the shot's region";
+  } else if (e.clearance < shot_->clearance) {
+    e.why_infeasible = "the camera is " + std::to_string(std::max(0.0, e.clearance)) +
+                       " m from solid geometry or a person, nearer than the clearance";
+  } else if (!in(pose.fov, shot_->fov)) {
+    e.why_infeasible = "the field of view is outside the shot's";
+  } else if (!in(pose.roll, shot_->roll)) {
+    e.why_infeasible = "the roll is outside the shot's";
+  } else if (std::abs(pose.aspect - shot_->aspect) > 1e-9) {
+    e.why_infeasible = "the aspect is not the shot's";
+  } else if (!first_hard.empty()) {
+    e.why_infeasible = first_hard;
+  }
+  e.feasible = e.why_infeasible.empty();
+  return e;
+}
+
+ShotPropertyConstraint::ShotPropertyConstraint(const CompositionProblem& owner, std::size_t index,
+                                               const ShotPropertyKind& kind)
+    : Constraint({0, 1, 2, 3, 4, 5, 6}, owner.shot().properties[index].weight,
+                 owner.shot().properties[index].hard),
+      owner_(&owner),
+      property_(&owner.shot().properties[index]),
+      kind_(&kind),
+      targets_(owner.targets()[index].data()),
+      kind_name_("shot." + kind.name) {}
+
+double ShotPropertyConstraint::score(const View& view) const {
+  const MeasureContext context{view, owner_->world(), targets_};
+  return satisfaction(kind_->measure(*property_, context), property_->range, property_->softness,
+                      kind_->circular);
+}
+
+double ShotPropertyConstraint::violation(std::span<const double> values) const {
+  const std::optional<View> view = View::of(owner_->pose(values));
+  return view ? 1 - score(*view) : 1.0;
+}
+
+ShotClearanceConstraint::ShotClearanceConstraint(const CompositionProblem& owner)
+    : Constraint({0, 1, 2}, 1, true), owner_(&owner) {}
+
+double ShotClearanceConstraint::violation(std::span<const double> values) const {
+  const double r = owner_->shot().clearance;
+  const Eigen::Vector3d p(values[0], values[1], values[2]);
+  return std::max(0.0, r - owner_->world().clearance(p, r + 1));
+}
+
+}  // namespace sightline::camera

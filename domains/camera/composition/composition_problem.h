@@ -1,0 +1,107 @@
+// CompositionProblem: a shot at one instant as a weighted CSP over the camera's pose.
+//
+// Variables (real intervals): cam_x, cam_y, cam_z (the shot's region), yaw and pitch of the
+// view direction in degrees (yaw 0 along +z, 90 along +x; pitch in [-89, 89], > 0 up), fov
+// and roll in degrees (the shot's value, or its range when the camera may zoom or roll).
+// The look-at point is position + direction.
+// Constraints:
+//   one per property (ShotPropertyConstraint): violation 1 - satisfaction, soft with the
+//   property's weight, or hard (the pose must score 1);
+//   clearance (hard): how far the camera is inside `clearance` of solid geometry or a
+//   person's box.
+// So a pose's cost is the sum of weight x (1 - satisfaction), FORMATS.md's cost, and every
+// solver of the registry composes shots. set_time() moves the people and movers.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/composition/camera_pose.h"
+#include "sightline/domains/camera/composition/property_kinds.h"
+#include "sightline/domains/camera/composition/shot.h"
+#include "sightline/domains/camera/composition/shot_world.h"
+
+namespace sightline::camera {
+
+// How a pose does on a shot, by FORMATS.md's definitions.
+struct ShotEvaluation {
+  bool valid_pose = false;   // a view exists (not vertical, fov in (0, 180), ...)
+  bool feasible = false;     // inside the region, clear, lens in range, every hard property 1
+  double satisfaction = 0;   // weighted mean of the soft properties' scores (1 with none)
+  double cost = 0;           // sum of weight x (1 - score) over the soft properties
+  double clearance = 0;      // distance to the nearest solid or person (capped at 10 m)
+  std::vector<double> measures;  // per property, as measured (inf / NaN as FORMATS.md says)
+  std::vector<double> scores;    // per property, in [0, 1]
+  std::string why_infeasible;    // empty when feasible: the first rule broken
+};
+
+class CompositionProblem {
+ public:
+  static constexpr csp::VariableId kX = 0, kY = 1, kZ = 2, kYaw = 3, kPitch = 4, kFov = 5,
+                                   kRoll = 6;
+
+  // `scene` and `shot` must outlive the problem. Throws csp::InputError (at the property)
+  // when a property names someone the scene does not have.
+  CompositionProblem(const Scene& scene, const Shot& shot, double t);
+  CompositionProblem(const Scene&&, const Shot&, double) = delete;
+
+  csp::Problem& problem() { return *problem_; }
+  const csp::Problem& problem() const { return *problem_; }
+  const Shot& shot() const { return *shot_; }
+  const ShotWorld& world() const { return *world_; }
+  // The people and movers at time t (no allocation).
+  void set_time(double t) { world_->set_time(t); }
+  // Each property's targets, as indices into world().people().
+  const std::vector<std::vector<int>>& targets() const { return targets_; }
+
+  CameraPose pose(std::span<const double> values) const;
+  // The assignment of a pose (yaw and pitch of its view direction; clamped to the domains).
+  csp::Assignment assignment(const CameraPose& pose) const;
+  // FORMATS.md's verdict on a pose, computed from the definitions (not from the CSP).
+  ShotEvaluation evaluate(const CameraPose& pose) const;
+
+ private:
+  const Shot* shot_;
+  std::unique_ptr<ShotWorld> world_;
+  std::unique_ptr<csp::Problem> problem_;
+  std::vector<std::vector<int>> targets_;
+};
+
+// One property as a constraint over the seven pose variables. Camera-aware solvers find the
+// shot through it (dynamic_cast): its property, kind, targets and world.
+class ShotPropertyConstraint : public csp::Constraint {
+ public:
+  ShotPropertyConstraint(const CompositionProblem& owner, std::size_t index,
+                         const ShotPropertyKind& kind);
+  std::string_view kind() const override { return kind_name_; }
+  double query_cost() const override { return kind_->name == "visible" ? 27 : 0; }
+  double violation(std::span<const double> values) const override;
+  // The property's score at a pose (0 for an invalid one).
+  double score(const View& view) const;
+  const ShotProperty& property() const { return *property_; }
+  const CompositionProblem& owner() const { return *owner_; }
+
+ private:
+  const CompositionProblem* owner_;
+  const ShotProperty* property_;
+  const ShotPropertyKind* kind_;
+  const int* targets_;
+  std::string kind_name_;
+};
+
+// Hard: max(0, clearance - distance to the nearest solid or person's box).
+class ShotClearanceConstraint : public csp::Constraint {
+ public:
+  explicit ShotClearanceConstraint(const CompositionProblem& owner);
+  std::string_view kind() const override { return "shot.clearance"; }
+  double query_cost() const override { return 1; }
+  double violation(std::span<const double> values) const override;
+
+ private:
+  const CompositionProblem* owner_;
+};
+
+}  // namespace sightline::camera

@@ -1,0 +1,16 @@
+// The composition solvers, registered by name beside the generic ones and the camera's
+// octrees: `shot-search` (shot_search.h), the one `compose` uses by default. Every other
+// solver of the registry composes shots too: a shot is a csp::Problem
+// (composition_problem.h).
+#pragma once
+
+#include "sightline/solvers/registry.h"
+
+namespace sightline::camera {
+
+inline constexpr const char* kRecommendedCompositionSolver = "shot-search";
+
+// Adds the composition solvers to `registry`; calling it again is harmless.
+void register_composition_solvers(solvers::SolverRegistry& registry);
+
+}  // namespace sightline::camera

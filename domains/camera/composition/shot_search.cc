@@ -1,0 +1,334 @@
+#include "sightline/domains/camera/composition/shot_search.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "sightline/domains/camera/composition/composition_problem.h"
+
+namespace sightline::camera {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+constexpr double kRadians = 3.14159265358979323846 / 180.0;
+constexpr int kDims = 7;  // x, y, z, yaw offset, pitch offset, fov, roll
+using Point = std::array<double, kDims>;
+
+const CompositionProblem* owner_of(const csp::Problem& problem) {
+  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
+    if (const auto* c = dynamic_cast<const ShotPropertyConstraint*>(&problem.constraint(id))) {
+      return &c->owner();
+    }
+  }
+  return nullptr;
+}
+
+double halton(std::uint64_t index, std::uint64_t base) {
+  double f = 1, r = 0;
+  while (index > 0) {
+    f /= static_cast<double>(base);
+    r += f * static_cast<double>(index % base);
+    index /= base;
+  }
+  return r;
+}
+
+double signed_degrees(double a) {
+  a = std::fmod(a + 180.0, 360.0);
+  return (a < 0 ? a + 360.0 : a) - 180.0;
+}
+
+double mid(const ValueRange& r, double fallback) {
+  if (std::isfinite(r.lo) && std::isfinite(r.hi)) return (r.lo + r.hi) / 2;
+  if (std::isfinite(r.lo)) return r.lo > 0 ? r.lo * 1.25 : r.lo + fallback;
+  if (std::isfinite(r.hi)) return r.hi * 0.8;
+  return fallback;
+}
+
+// The search's view of one problem: the targets' centre, and the point -> assignment map.
+class Framing {
+ public:
+  Framing(const csp::Problem& problem, const CompositionProblem& owner)
+      : problem_(&problem), owner_(&owner) {
+    const auto& people = owner.world().people();
+    std::vector<int> seen;
+    for (const std::vector<int>& targets : owner.targets()) {
+      for (int t : targets) {
+        if (std::find(seen.begin(), seen.end(), t) == seen.end()) seen.push_back(t);
+      }
+    }
+    centre_.setZero();
+    for (int t : seen) centre_ += people[static_cast<std::size_t>(t)].aim;
+    centre_ /= static_cast<double>(std::max<std::size_t>(1, seen.size()));
+    targets_ = std::move(seen);
+    values_.resize(kDims);
+  }
+  const Eigen::Vector3d& centre() const { return centre_; }
+  const std::vector<int>& targets() const { return targets_; }
+
+  // The assignment of a point: the aim offsets are relative to the direction to the centre.
+  const csp::Assignment& values(const Point& x) {
+    const Eigen::Vector3d d = centre_ - Eigen::Vector3d(x[0], x[1], x[2]);
+    const double yaw = std::atan2(d.x(), d.z()) * kDegrees;
+    const double pitch = std::atan2(d.y(), std::hypot(d.x(), d.z())) * kDegrees;
+    values_[0] = x[0];
+    values_[1] = x[1];
+    values_[2] = x[2];
+    values_[3] = signed_degrees(yaw + x[3]);
+    values_[4] = std::clamp(pitch + x[4], -89.0, 89.0);
+    values_[5] = x[5];
+    values_[6] = x[6];
+    return values_;
+  }
+  csp::Score score(const Point& x) { return problem_->score(values(x)); }
+
+  // Aim offsets that put the screen_position targets at their points (a few Newton steps
+  // on their mean screen error), from (0, 0): the centre at the image's centre.
+  void aim(Point& x) {
+    x[3] = x[4] = 0;
+    const Shot& shot = owner_->shot();
+    bool any = false;
+    for (const ShotProperty& p : shot.properties) any = any || p.kind == "screen_position";
+    if (!any) return;
+    for (int step = 0; step < 6; ++step) {
+      Eigen::Vector2d r0;
+      if (!error(x, r0)) return;
+      if (r0.norm() < 1e-4) return;
+      Eigen::Matrix2d j;
+      constexpr double h = 0.25;
+      for (int k = 0; k < 2; ++k) {
+        Point y = x;
+        y[3 + k] += h;
+        Eigen::Vector2d r1;
+        if (!error(y, r1)) return;
+        j.col(k) = (r1 - r0) / h;
+      }
+      if (std::abs(j.determinant()) < 1e-12) return;
+      const Eigen::Vector2d delta = j.inverse() * r0;
+      x[3] -= std::clamp(delta.x(), -30.0, 30.0);
+      x[4] -= std::clamp(delta.y(), -30.0, 30.0);
+    }
+  }
+
+ private:
+  // Mean of (screen point - wanted point) over the screen_position properties.
+  bool error(const Point& x, Eigen::Vector2d& out) {
+    const std::optional<View> view = View::of(owner_->pose(values(x)));
+    if (!view) return false;
+    out.setZero();
+    int n = 0;
+    const Shot& shot = owner_->shot();
+    for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+      const ShotProperty& p = shot.properties[i];
+      if (p.kind != "screen_position") continue;
+      const auto& person = owner_->world().people()[static_cast<std::size_t>(owner_->targets()[i][0])];
+      const std::optional<Eigen::Vector2d> s = view->project(person.aim);
+      if (!s) return false;
+      out += *s - p.at;
+      ++n;
+    }
+    out /= std::max(1, n);
+    return true;
+  }
+
+  const csp::Problem* problem_;
+  const CompositionProblem* owner_;
+  Eigen::Vector3d centre_;
+  std::vector<int> targets_;
+  csp::Assignment values_;
+};
+
+// Where the properties of person `t` ask the camera to stand: (distance, bearings, elevations).
+struct Vantage {
+  double distance = 4;
+  std::vector<double> bearings;    // degrees, world yaw of (camera - aim)
+  std::vector<double> elevations;  // degrees
+};
+
+Vantage vantage_of(const CompositionProblem& owner, int t, double fov) {
+  const Shot& shot = owner.shot();
+  const PersonAtTime& person = owner.world().people()[static_cast<std::size_t>(t)];
+  Vantage v;
+  const double tan_half = std::tan(fov * kRadians / 2);
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const ShotProperty& p = shot.properties[i];
+    if (owner.targets()[i].size() != 1 || owner.targets()[i][0] != t) continue;
+    if (p.kind == "distance") {
+      v.distance = mid(p.range, 4);
+    } else if (p.kind == "size") {
+      const Eigen::Vector3d size = person.body.size();
+      const double wanted = mid(p.range, 0.3);
+      if (!(wanted > 0)) continue;
+      double extent = size.y(), image = 2 * tan_half;  // height: image height at depth 1
+      if (p.measure == "width") {
+        extent = std::max(size.x(), size.z());
+        image = 2 * tan_half * shot.aspect;
+      } else if (p.measure == "area") {
+        extent = std::sqrt(size.y() * std::max(size.x(), size.z()));
+        image = 2 * tan_half * std::sqrt(shot.aspect);
+      }
+      const double fraction = p.measure == "area" ? std::sqrt(wanted) : wanted;
+      v.distance = extent / (image * fraction);
+    } else if (p.kind == "angle_horizontal") {
+      const double hi = p.range.hi < p.range.lo ? p.range.hi + 360 : p.range.hi;
+      v.bearings.push_back(person.yaw + (p.range.lo + hi) / 2);
+    } else if (p.kind == "angle_vertical") {
+      v.elevations.push_back(mid(p.range, 10));
+    }
+  }
+  return v;
+}
+
+Eigen::Vector3d from_bearing(double bearing, double elevation) {
+  return {std::cos(elevation * kRadians) * std::sin(bearing * kRadians),
+          std::sin(elevation * kRadians),
+          std::cos(elevation * kRadians) * std::cos(bearing * kRadians)};
+}
+
+}  // namespace
+
+const solvers::OptionSchema<ShotSearch::Options>& ShotSearch::Options::schema() {
+  static const solvers::OptionSchema<Options> schema = [] {
+    solvers::OptionSchema<Options> s;
+    s.integer("samples", &Options::samples, "Halton positions sampled in the region (>= 0)", 0);
+    s.integer("keep", &Options::keep, "candidates refined by the compass search (>= 1)", 1);
+    s.real("min_step", &Options::min_step,
+           "step (metres, degrees) below which the refinement stops (> 0)", 1e-9);
+    return s;
+  }();
+  return schema;
+}
+
+std::string ShotSearch::Options::validate() const { return ""; }
+
+std::string ShotSearch::unsuitable_reason(const csp::Problem& problem) const {
+  return owner_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
+}
+
+void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double> start,
+                            const solvers::SolveContext& context, solvers::SolverResult& result) {
+  const CompositionProblem* owner = owner_of(problem);
+  if (!owner) throw std::invalid_argument(name_ + ": " + unsuitable_reason(problem));
+  solvers::Budget budget(context.limits, 1);
+  Framing framing(problem, *owner);
+  const Shot& shot = owner->shot();
+  auto clamp = [&](Point& x) {
+    for (int k : {0, 1, 2, 5, 6}) x[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x[k]);
+  };
+  const double fov = (shot.fov.lo + shot.fov.hi) / 2;
+  const double roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
+  std::uint64_t evaluations = 0, iterations = 0;
+
+  // 1-2. Candidates, each aimed and scored.
+  std::vector<std::pair<csp::Score, Point>> candidates;
+  auto add = [&](const Eigen::Vector3d& p) {
+    Point x{p.x(), p.y(), p.z(), 0, 0, fov, roll};
+    clamp(x);
+    framing.aim(x);
+    candidates.emplace_back(framing.score(x), x);
+    ++evaluations;
+  };
+  if (start.size() == kDims) {
+    // The start's own aim, as offsets from the direction to the centre.
+    Point x{start[0], start[1], start[2], 0, 0, start[5], start[6]};
+    clamp(x);
+    const csp::Assignment& base = framing.values(x);
+    x[3] = signed_degrees(start[3] - base[3]);
+    x[4] = start[4] - base[4];
+    candidates.emplace_back(framing.score(x), x);
+    ++evaluations;
+  }
+  std::vector<std::pair<int, Vantage>> vantages;
+  for (int t : framing.targets()) vantages.emplace_back(t, vantage_of(*owner, t, fov));
+  // The group: centred on the targets' centre, far enough to hold them all.
+  Vantage group;
+  double radius = 0;
+  for (int t : framing.targets()) {
+    const PersonAtTime& person = owner->world().people()[static_cast<std::size_t>(t)];
+    radius = std::max(radius, (person.aim - framing.centre()).norm() + person.body.size().y() / 2);
+  }
+  group.distance = radius / std::tan(fov * kRadians / 2) * 1.2 + 1;
+  for (const auto& [t, v] : vantages) {
+    group.bearings.insert(group.bearings.end(), v.bearings.begin(), v.bearings.end());
+    group.elevations.insert(group.elevations.end(), v.elevations.begin(), v.elevations.end());
+  }
+  auto around = [&](const Eigen::Vector3d& aim, Vantage v) {
+    if (v.bearings.empty()) v.bearings = {0, 45, 90, 135, 180, 225, 270, 315};
+    if (v.elevations.empty()) v.elevations = {10, 25};
+    for (double b : v.bearings) {
+      for (double e : v.elevations) add(aim + v.distance * from_bearing(b, e));
+    }
+  };
+  for (const auto& [t, v] : vantages) {
+    around(owner->world().people()[static_cast<std::size_t>(t)].aim, v);
+  }
+  if (framing.targets().size() > 1) around(framing.centre(), group);
+  const Aabb& region = shot.region;
+  for (std::int64_t i = 1; i <= options_.samples; ++i) {
+    const auto k = static_cast<std::uint64_t>(i);
+    add(region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5))
+                         .cwiseProduct(region.max - region.min));
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.first.better_than(b.first); });
+  candidates.resize(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(options_.keep)));
+
+  csp::Score best = candidates.front().first;
+  Point best_x = candidates.front().second;
+  budget.note_best(evaluations);
+
+  // 3. Compass search from each kept candidate.
+  const Eigen::Vector3d extent = region.max - region.min;
+  const double position_step = std::max(0.05, 0.1 * extent.minCoeff());
+  for (auto& [score, x] : candidates) {
+    std::array<double, kDims> step{position_step, position_step, position_step, 4, 4,
+                                   shot.fov.fixed() ? 0.0 : 4.0, shot.roll.fixed() ? 0.0 : 4.0};
+    while (!budget.exhausted(evaluations, iterations)) {
+      ++iterations;
+      bool improved = false;
+      for (int k = 0; k < kDims; ++k) {
+        if (step[static_cast<std::size_t>(k)] == 0) continue;
+        for (double sign : {1.0, -1.0}) {
+          Point y = x;
+          y[static_cast<std::size_t>(k)] += sign * step[static_cast<std::size_t>(k)];
+          clamp(y);
+          if (y == x) continue;
+          const csp::Score s = framing.score(y);
+          ++evaluations;
+          if (s.better_than(score)) {
+            score = s;
+            x = y;
+            improved = true;
+            break;
+          }
+        }
+      }
+      if (score.better_than(best)) {
+        best = score;
+        best_x = x;
+        budget.note_best(evaluations);
+      }
+      if (improved) continue;
+      double largest = 0;
+      for (double& s : step) {
+        s /= 2;
+        largest = std::max(largest, s);
+      }
+      if (largest < options_.min_step) break;
+    }
+    if (budget.exhausted(evaluations, iterations)) break;
+  }
+  result.best = framing.values(best_x);
+  result.evaluations = evaluations;
+  result.iterations = iterations;
+  result.stop = budget.exhausted(evaluations, iterations) ? budget.reason()
+                                                          : solvers::StopReason::kCompleted;
+  result.message.clear();
+  solvers::finish_result(problem, context, budget, result);
+}
+
+}  // namespace sightline::camera

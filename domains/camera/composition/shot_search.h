@@ -1,0 +1,49 @@
+// ShotSearch (`shot-search`): the composition solver `compose` uses by default.
+//
+// A shot's cost is flat almost everywhere a generic method starts (a target off screen
+// scores 0 whatever the small moves), so the search starts where the properties point:
+//   1. candidate positions: around each target at the distance its `distance` or `size`
+//      properties ask for (size: the body's height over the image height the fov gives),
+//      at the vantage its angle properties ask for (or eight bearings and two elevations
+//      when they ask none), around the group's centre likewise, plus a Halton sample of the
+//      region and the start; each clamped into the region;
+//   2. at each, the view aims at the targets (their aim points' centre, then a few Newton
+//      steps putting `screen_position` targets at their points), the lens at its mid value;
+//   3. the best few are refined by a compass search in (position, aim offset, fov, roll),
+//      where the aim offset is relative to the targets' direction, so a step of the camera
+//      keeps its framing; steps halve until `min_step`, or the budget ends.
+// Every candidate is scored by the problem itself (csp::Problem::score), so the result is
+// the problem's optimum as far as the search found it, hard constraints first.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "sightline/solvers/options.h"
+#include "sightline/solvers/solver.h"
+
+namespace sightline::camera {
+
+class ShotSearch : public solvers::Solver {
+ public:
+  struct Options {
+    std::int64_t samples = 32;  // Halton positions in the region
+    std::int64_t keep = 4;      // candidates refined
+    double min_step = 0.005;    // metres and degrees: where the refinement stops
+
+    static const solvers::OptionSchema<Options>& schema();
+    std::string validate() const;
+  };
+
+  ShotSearch(std::string name, Options options) : name_(std::move(name)), options_(options) {}
+  std::string name() const override { return name_; }
+  std::string unsuitable_reason(const csp::Problem& problem) const override;
+  void solve_into(const csp::Problem& problem, std::span<const double> start,
+                  const solvers::SolveContext& context, solvers::SolverResult& result) override;
+
+ private:
+  std::string name_;
+  Options options_;
+};
+
+}  // namespace sightline::camera

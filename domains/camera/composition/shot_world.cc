@@ -1,0 +1,125 @@
+#include "sightline/domains/camera/composition/shot_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sightline/domains/camera/geometry/triangle_index.h"
+#include "sightline/world.h"
+
+namespace sightline::camera {
+
+bool segment_enters_interior(const Aabb& box, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  // The points a + t (b - a), t in [0, 1], strictly inside every slab: the open intervals
+  // (enter_i, leave_i) of t meet in (enter, leave), which meets [0, 1] iff enter < leave,
+  // leave > 0 and enter < 1.
+  double enter = -std::numeric_limits<double>::infinity();
+  double leave = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double d = b[i] - a[i];
+    if (d == 0) {
+      if (!(box.min[i] < a[i] && a[i] < box.max[i])) return false;
+      continue;
+    }
+    double t0 = (box.min[i] - a[i]) / d, t1 = (box.max[i] - a[i]) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter < leave && leave > 0 && enter < 1;
+}
+
+std::array<Eigen::Vector3d, kPersonSamples> person_samples(const Aabb& body) {
+  static constexpr double kAt[3] = {0.1, 0.5, 0.9};
+  std::array<Eigen::Vector3d, kPersonSamples> out;
+  const Eigen::Vector3d size = body.max - body.min;
+  int n = 0;
+  for (double i : kAt) {
+    for (double j : kAt) {
+      for (double k : kAt) {
+        out[n++] = body.min + Eigen::Vector3d(i * size.x(), j * size.y(), k * size.z());
+      }
+    }
+  }
+  return out;
+}
+
+ShotWorld::ShotWorld(const Scene& scene, double t) : scene_(&scene) {
+  if (scene.has_character()) {
+    PersonAtTime p;
+    p.name = scene.character_name();
+    people_.push_back(p);
+  }
+  const std::size_t first_actor_mover = scene.movers().size() - scene.actors().size();
+  for (std::size_t k = 0; k < scene.actors().size(); ++k) {
+    PersonAtTime p;
+    p.name = scene.actors()[k].name;
+    p.mover = static_cast<int>(first_actor_mover + k);
+    people_.push_back(p);
+  }
+  movers_.resize(scene.movers().size());
+  set_time(t);
+}
+
+void ShotWorld::set_time(double t) {
+  t_ = t;
+  std::size_t i = 0;
+  if (scene_->has_character()) {
+    const CharacterState s = scene_->character_at(t);
+    people_[0].body = scene_->character().body_at(s.position);
+    people_[0].aim = scene_->character().look_at(s.position);
+    people_[0].yaw = s.yaw;
+    i = 1;
+  }
+  for (const Actor& actor : scene_->actors()) {
+    const CharacterState s = actor.state_at(t);
+    people_[i].body = actor.shape.body_at(s.position);
+    people_[i].aim = actor.shape.look_at(s.position);
+    people_[i].yaw = s.yaw;
+    ++i;
+  }
+  for (std::size_t m = 0; m < movers_.size(); ++m) movers_[m] = scene_->movers()[m].box_at(t);
+}
+
+std::optional<int> ShotWorld::find(const std::string& name) const {
+  for (std::size_t i = 0; i < people_.size(); ++i) {
+    if (people_[i].name == name) return static_cast<int>(i);
+  }
+  return std::nullopt;
+}
+
+bool ShotWorld::clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q, int own) const {
+  const int own_mover = own >= 0 ? people_[static_cast<std::size_t>(own)].mover : -1;
+  for (std::size_t m = 0; m < movers_.size(); ++m) {
+    if (static_cast<int>(m) == own_mover) continue;
+    if (segment_enters_interior(movers_[m], p, q)) return false;
+  }
+  // The followed character is not a mover: its box blocks the others' samples.
+  if (scene_->has_character() && own != 0 && segment_enters_interior(people_[0].body, p, q)) {
+    return false;
+  }
+  if (const sightline::World* world = scene_->world()) {
+    return !world->first_hit({p.x(), p.y(), p.z()}, {q.x(), q.y(), q.z()}, t_).has_value();
+  }
+  bool blocked = false;
+  Aabb span{p.cwiseMin(q), p.cwiseMax(q)};
+  scene_->solid_tree().for_each_touching(span, [&](auto index) {
+    if (!blocked && segment_enters_interior(scene_->solid_tree().box(index), p, q)) blocked = true;
+  });
+  if (blocked) return false;
+  return !scene_->triangle_index().segment_blocked(p, q);
+}
+
+double ShotWorld::clearance(const Eigen::Vector3d& p, double limit) const {
+  double d = limit;
+  if (const sightline::World* world = scene_->world()) {
+    d = std::min(d, world->clearance({p.x(), p.y(), p.z()}, limit, t_));
+  } else {
+    d = std::min(d, scene_->clearance(p, limit));
+  }
+  for (const Aabb& box : movers_) d = std::min(d, box.signed_distance(p));
+  if (scene_->has_character()) d = std::min(d, people_[0].body.signed_distance(p));
+  return d;
+}
+
+}  // namespace sightline::camera
