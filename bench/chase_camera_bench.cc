@@ -176,7 +176,7 @@ int main(int argc, char** argv) {
   // Walks on real levels (experiments/scenes/levels/, made by `sightline level walk`): the
   // per-frame distribution over one whole walk (the level is loaded once, outside timing).
   // SIGHTLINE_BENCH_WALKS adds folders of walks (':'-separated): a user's own levels, or
-  // walks on maps the project does not ship (docs/EXPERIMENTS.md, "Held-out maps").
+  // walks on maps the project does not ship (docs/studies/2026-11-24-held-out-maps.md).
   std::vector<std::string> level_folders{std::string(SIGHTLINE_SOURCE_DIR) +
                                          "/experiments/scenes/levels"};
   if (const char* extra = std::getenv("SIGHTLINE_BENCH_WALKS")) {

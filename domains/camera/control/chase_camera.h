@@ -76,7 +76,8 @@ struct ChaseCameraOptions {
   double target_smoothing = 0.15;  // s: time constant of the low-pass on the solver's target
   // First-order low-pass stages in cascade, each of time constant target_smoothing (1 to
   // kMaxSmoothingStages). 2 cuts the camera's jerk to about a third on the thesis scenes, at
-  // the cost of more lag behind the solver's target (docs/EXPERIMENTS.md).
+  // the cost of more lag behind the solver's target
+  // (docs/studies/2026-11-22-target-smoothing-stages.md).
   static constexpr int kMaxSmoothingStages = 4;
   int target_smoothing_stages = 1;
   double min_shot_seconds = 1.0;  // s: no discretionary cut sooner after a cut

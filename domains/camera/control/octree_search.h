@@ -23,7 +23,7 @@
 // In the slowest 2% of frames on oa_thor-walk4, asked in the problem's order, 44% of the
 // candidates that reach these tests were dropped by the future visibility, after paying for
 // the body's rays and clearance; 23% by the body, 7% by the look-at, 5% by clearance
-// (docs/BENCHMARKS.md, issue 13). The order changes nothing but the time: a candidate is
+// (docs/studies/2026-11-24-anticipating-frame-cost.md). The order changes nothing but the time: a candidate is
 // dropped only when a lower bound of its cost, the problem-order sum with the terms not yet
 // known counted as 0 (floating-point addition is monotone, so that is never above the full
 // sum), reaches the bound, and a survivor's cost is summed in the problem's order, bit for

@@ -11,8 +11,8 @@
 // or below 2 per minute of EACH scene. On each thesis scene and each of the scenes
 // the anticipating camera's jerk p99 must not exceed the reactive camera's. On the shipped
 // scenes the path camera (preset anticipating-path) is held to the same per-scene checks but
-// the jerk one. Jerk p99 of both cameras is printed per scene for the record (docs/CAMERA.md
-// has the table).
+// the jerk one. Jerk p99 of both cameras is printed per scene for the record (docs/studies/
+// 2026-11-24-anticipating-camera-results.md has the table).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -274,7 +274,8 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
     // The path camera (preset anticipating-path: the known future instead of a forecast,
     // the same planner) is held to the same per-scene visibility, clearance, jump and
     // discretionary-cut checks. Not to the jerk check: the jerk goal is the
-    // anticipating preset's, and the path camera misses it on crammed-doorway (docs/CAMERA.md).
+    // anticipating preset's, and the path camera misses it on crammed-doorway
+    // (docs/studies/2026-11-24-anticipating-camera-results.md).
     Scene path_scene = camera::read_scene_file(path);
     const Judged b = run_anticipating(path_scene, "anticipating-path");
     expect_clean(path_scene, b, " (path)");

@@ -1,7 +1,7 @@
 // The anticipating camera behind a running character: when it is left behind and loses sight,
 // its forced cut must land on a shot that holds, not a metre or two from where it was.
 //
-// Found on held-out game levels (docs/EXPERIMENTS.md, "Held-out maps"): a character running
+// Found on held-out game levels (docs/studies/2026-11-24-held-out-maps.md): a character running
 // round corners near the camera's speed bound left it behind; each forced cut went to the
 // solver's target inside the search cube around the old camera, sight was lost again the
 // next frame, and the camera cut again: up to three cuts in three frames. Here generated
