@@ -9,6 +9,8 @@
 
 #include "apps/commands.h"
 #include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
@@ -20,8 +22,9 @@ namespace {
 
 struct FollowOptions {
   std::string scene;
-  // FORMATS.md "The follow command": without --solver, the recommended camera solver.
-  std::string solver = "occlusion-octree";
+  // FORMATS.md "The follow command": without --solver, the recommended camera solver (the
+  // recommended composition solver for a scene with a shot: block).
+  std::string solver;
   std::vector<std::string> settings;
   std::string profile;
   std::uint64_t seed = 1;
@@ -32,18 +35,15 @@ struct FollowOptions {
 
 void run_follow(const FollowOptions& o) {
   camera::Scene scene = camera::read_scene_file(o.scene);
-  if (scene.shot()) {
-    throw std::invalid_argument(
-        o.scene + ": the scene has a shot: block; filming it as a tracking shot is not built "
-        "yet (`sightline compose` solves the shot at one instant)");
-  }
   camera::CameraProfile profile = scene.profile();
   if (!o.profile.empty()) {
     profile = camera::is_preset(o.profile) ? camera::preset_profile(o.profile)
                                            : camera::read_profile_file(o.profile);
   }
   camera::ChaseCameraOptions options;
-  options.solver = o.solver;
+  options.solver = !o.solver.empty()   ? o.solver
+                   : scene.shot() ? camera::kRecommendedCompositionSolver
+                                  : camera::kRecommendedCameraSolver;
   options.seed = o.seed;
   options.visibility_guard = !o.no_guard;
   options.target_smoothing_stages = o.smoothing_stages;
@@ -64,7 +64,7 @@ void add_follow_command(CLI::App& app) {
   cmd->add_option("--solver", options->solver,
                   "registered solver or pipeline, e.g. occlusion-octree, bourne-octree, sls, "
                   "occlusion-octree>ceres-refine (default: occlusion-octree, the recommended "
-                  "camera solver)");
+                  "camera solver; shot-search for a scene with a shot: block)");
   cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
   cmd->add_option("--profile", options->profile,
                   "camera profile: a preset name (thesis-default, close-follow, high-follow, anticipating, anticipating-path) or "

@@ -2,6 +2,7 @@
 // prints its summary: boxes, areas, movers, actors, character, duration, frames, camera and profile. A bad
 // file is an InputError ("FILE:LINE:COL: what was expected"), which main turns into a
 // message and exit status 2.
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "apps/commands.h"
 #include "sightline/domains/camera/camera_problem.h"
 #include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/sources/shot_problems.h"
 
 namespace sightline::apps {
 namespace {
@@ -129,6 +131,23 @@ void add_scene_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   check->add_option("scene", *path, "scene file (YAML, see docs/CAMERA.md)")->required();
   check->callback([path] { check_scene(*path); });
+  CLI::App* problem = scene->add_subcommand(
+      "shot-problem", "write problem SEED of the benchmark of shot problems as a scene file "
+                      "(experiments/sources/shot_problems.h)");
+  auto seed = std::make_shared<std::uint64_t>(1);
+  auto out = std::make_shared<std::string>();
+  problem->add_option("seed", *seed, "the problem's seed (>= 1)")->required()->check(CLI::PositiveNumber);
+  problem->add_option("--out", *out, "write it here (default: standard output)");
+  problem->callback([seed, out] {
+    const std::string text = experiments::shot_problem_yaml(*seed);
+    if (out->empty()) {
+      std::cout << text;
+      return;
+    }
+    std::ofstream file(*out);
+    file << text;
+    if (!file) throw std::runtime_error("cannot write " + *out);
+  });
 }
 
 }  // namespace sightline::apps

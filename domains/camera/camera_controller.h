@@ -35,6 +35,9 @@ struct CameraFrame {
   csp::Score score;             // of `position`, under this frame's camera problem
   bool look_at_visible = true;  // the controller's own sight-line query
   double solve_seconds = 0;     // the whole update
+  // The lens, for a camera that composes shots (0 when the controller has no lens of its
+  // own: the chase camera's fov is the viewer's).
+  double fov = 0, roll = 0;     // degrees
   EffectiveProfile effective;   // desired values in force
 };
 

@@ -81,8 +81,11 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
     row.desired_height = f.effective.desired_height;
     row.desired_distance = f.effective.desired_distance;
     row.desired_orientation = f.effective.desired_orientation;
+    row.fov = f.fov;
+    row.roll = f.roll;
     run.trace.push_back(row);
   }
+  if (scene.shot()) run.shot = shot_metrics(scene, run.trace);
   run.metrics = compute_metrics(
       run.trace, metrics_input(scene, profile, controller->max_step(1.0 / scene.frame_rate())));
   return run;
@@ -90,6 +93,25 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
 
 std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) {
   const RunMetrics& m = run.metrics;
+  if (run.shot) {
+    const ShotMetrics& s = *run.shot;
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(1);
+    out << "Scene '" << scene.name() << "', a tracking shot with solver '" << run.solver
+        << "': " << m.frames << " frames; shown (framed and seen as the shot asks, "
+        << "independent check):";
+    for (std::size_t i = 0; i < s.people.size(); ++i) {
+      out << (i ? "," : "") << " " << s.people[i].name << " " << s.people[i].shown_percent << "%";
+    }
+    out << "; satisfaction mean " << std::setprecision(3) << s.satisfaction_mean << ", 10th percentile "
+        << s.satisfaction_p10 << std::setprecision(1) << "; the shot's rules kept in "
+        << s.feasible_percent << "% of frames; " << m.cuts << " cut" << (m.cuts == 1 ? "" : "s")
+        << " and " << m.unflagged_jumps << " unflagged jumps; solve time median " << m.solve_us_p50
+        << " us, p99 " << m.solve_us_p99 << " us; camera speed p99 " << m.speed_p99
+        << " m/s, jerk p99 " << m.jerk_p99 << " m/s^3.";
+    return out.str();
+  }
   const int visible = static_cast<int>(m.visible_percent * m.frames / 100.0 + 0.5);
   std::ostringstream out;
   out.setf(std::ios::fixed);

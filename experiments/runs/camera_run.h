@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "sightline/experiments/runs/controllers.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/runs/shot_metrics.h"
 #include "sightline/experiments/runs/trace.h"
 
 namespace sightline::experiments {
@@ -21,6 +23,8 @@ namespace sightline::experiments {
 struct CameraRun {
   std::vector<TraceRow> trace;
   RunMetrics metrics;
+  // For a scene with a shot: block (a tracking shot): how it kept its people.
+  std::optional<ShotMetrics> shot;
   std::string solver;
   std::string profile;
 };

@@ -4,12 +4,24 @@
 
 #include "sightline/domains/camera/baselines/pull_forward.h"
 #include "sightline/domains/camera/baselines/spring_arm.h"
+#include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/composition/tracking_camera.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
 
 namespace sightline::camera {
 
 std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
                                                   const CameraProfile& profile,
                                                   const ChaseCameraOptions& options) {
+  if (scene.shot()) {
+    // A scene with a shot: block is filmed as a tracking shot, by default with the
+    // recommended composition solver (FORMATS.md "The follow command").
+    TrackingOptions tracking;
+    tracking.solver = name.empty() ? kRecommendedCompositionSolver : name;
+    tracking.max_speed = options.max_speed;
+    tracking.seed = options.seed;
+    return std::make_unique<TrackingCamera>(scene, tracking);
+  }
   if (name == "spring-arm" || name == "pull-forward") {
     // The baselines have their own options (defaults); they share the smooth-motion bound
     // that decides what counts as a cut, and take no solver options.
@@ -26,7 +38,7 @@ std::unique_ptr<CameraController> make_controller(const std::string& name, const
     return std::make_unique<PullForward>(scene, profile, pull);
   }
   ChaseCameraOptions chase = options;
-  chase.solver = name;
+  chase.solver = name.empty() ? kRecommendedCameraSolver : name;
   return std::make_unique<ChaseCamera>(scene, profile, chase);
 }
 

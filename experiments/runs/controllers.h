@@ -11,7 +11,9 @@
 
 namespace sightline::camera {
 
-// `options.solver` is replaced by `name`. Throws solvers::OptionError /
+// `options.solver` is replaced by `name`; an empty name is the recommended solver: the
+// composition solver for a scene with a shot: block (filmed by a TrackingCamera), else the
+// camera solver. Throws solvers::OptionError /
 // std::invalid_argument for bad names or options.
 std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
                                                   const CameraProfile& profile,

@@ -1,5 +1,6 @@
 #include "sightline/experiments/runs/trace.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -78,7 +79,8 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot write trace file '" + tmp + "'");
-    out << trace_header() << "\n";
+    const bool lens = std::any_of(rows.begin(), rows.end(), [](const TraceRow& r) { return r.fov > 0; });
+    out << trace_header() << (lens ? ",fov,roll" : "") << "\n";
     char line[512];
     for (const TraceRow& r : rows) {
       // Fixed precision keeps traces byte-for-byte reproducible and diffable; camera positions
@@ -91,6 +93,14 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
                     r.target.y(), r.target.z(), r.cut ? 1 : 0, r.cost, r.solve_us,
                     r.controller_visible ? 1 : 0, r.desired_height, r.desired_distance,
                     r.desired_orientation, reason_cell(r.cut_reason).c_str());
+      if (lens) {
+        std::string text(line);
+        text.pop_back();  // the newline
+        char cells[64];
+        std::snprintf(cells, sizeof cells, ",%.4f,%.4f\n", r.fov, r.roll);
+        out << text << cells;
+        continue;
+      }
       out << line;
     }
     if (!out) throw std::runtime_error("error while writing trace file '" + tmp + "'");

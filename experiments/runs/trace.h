@@ -34,6 +34,9 @@ struct TraceRow {
   // "visibility-lost", "stuck", "too-fast" (camera_run.cc names them). Empty when the trace
   // does not say (a file without the cut_reason column).
   std::string cut_reason;
+  // The lens of a composing camera (a shot: scene's tracking shot), degrees; 0 for the chase
+  // camera. Written as the columns fov and roll when some row has a fov.
+  double fov = 0, roll = 0;
   // The 1-based line this row was read from (read_trace_csv), for messages; 0 otherwise.
   int line = 0;
 };

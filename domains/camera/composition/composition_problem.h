@@ -52,8 +52,9 @@ class CompositionProblem {
   const csp::Problem& problem() const { return *problem_; }
   const Shot& shot() const { return *shot_; }
   const ShotWorld& world() const { return *world_; }
-  // The people and movers at time t (no allocation).
-  void set_time(double t) { world_->set_time(t); }
+  // The people and movers at time t, or forecast `lead` seconds on at their velocity
+  // (ShotWorld::set_time). No allocation.
+  void set_time(double t, double lead = 0) { world_->set_time(t, lead); }
   // Each property's targets, as indices into world().people().
   const std::vector<std::vector<int>>& targets() const { return targets_; }
 

@@ -3,12 +3,14 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
+#include <random>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "sightline/domains/camera/composition/composition_problem.h"
+#include "sightline/domains/camera/composition/toric_framing.h"
 
 namespace sightline::camera {
 namespace {
@@ -55,12 +57,18 @@ class Framing {
   Framing(const csp::Problem& problem, const CompositionProblem& owner)
       : problem_(&problem), owner_(&owner) {
     const auto& people = owner.world().people();
+    // The people the shot wants in the image: every target but those it only keeps out
+    // (framed or visible with range [0, 0]: an exclusion).
     std::vector<int> seen;
-    for (const std::vector<int>& targets : owner.targets()) {
-      for (int t : targets) {
+    const std::vector<ShotProperty>& properties = owner.shot().properties;
+    for (std::size_t i = 0; i < properties.size(); ++i) {
+      const ShotProperty& p = properties[i];
+      if ((p.kind == "framed" || p.kind == "visible") && p.range.hi <= 0) continue;
+      for (int t : owner.targets()[i]) {
         if (std::find(seen.begin(), seen.end(), t) == seen.end()) seen.push_back(t);
       }
     }
+    if (seen.empty()) seen.push_back(owner.targets()[0][0]);
     centre_.setZero();
     for (int t : seen) centre_ += people[static_cast<std::size_t>(t)].aim;
     centre_ /= static_cast<double>(std::max<std::size_t>(1, seen.size()));
@@ -177,7 +185,14 @@ Vantage vantage_of(const CompositionProblem& owner, int t, double fov) {
       const double hi = p.range.hi < p.range.lo ? p.range.hi + 360 : p.range.hi;
       v.bearings.push_back(person.yaw + (p.range.lo + hi) / 2);
     } else if (p.kind == "angle_vertical") {
-      v.elevations.push_back(mid(p.range, 10));
+      // Its middle, and near both ends when they are finite (a group often fits at one end).
+      const double m = mid(p.range, 10);
+      v.elevations.push_back(m);
+      if (std::isfinite(p.range.lo) && std::isfinite(p.range.hi) && p.range.hi > p.range.lo) {
+        const double span = p.range.hi - p.range.lo;
+        v.elevations.push_back(std::clamp(p.range.lo + 0.1 * span, -85.0, 85.0));
+        v.elevations.push_back(std::clamp(p.range.hi - 0.1 * span, -85.0, 85.0));
+      }
     }
   }
   return v;
@@ -198,6 +213,8 @@ const solvers::OptionSchema<ShotSearch::Options>& ShotSearch::Options::schema() 
     s.integer("keep", &Options::keep, "candidates refined by the compass search (>= 1)", 1);
     s.real("min_step", &Options::min_step,
            "step (metres, degrees) below which the refinement stops (> 0)", 1e-9);
+    s.boolean("global", &Options::global,
+              "search the whole region (false: refine the start only, for tracking)");
     return s;
   }();
   return schema;
@@ -225,10 +242,21 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
 
   // 1-2. Candidates, each aimed and scored.
   std::vector<std::pair<csp::Score, Point>> candidates;
-  auto add = [&](const Eigen::Vector3d& p) {
+  // A candidate at p aimed at the targets (and, when several are wanted, a second one aimed
+  // at `subject` alone: a shot that cannot hold them all may do best on one).
+  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d* subject = nullptr) {
+    if (!candidates.empty() && budget.exhausted(evaluations, iterations)) return;
     Point x{p.x(), p.y(), p.z(), 0, 0, fov, roll};
     clamp(x);
     framing.aim(x);
+    candidates.emplace_back(framing.score(x), x);
+    ++evaluations;
+    if (subject == nullptr || framing.targets().size() < 2) return;
+    const csp::Assignment& to_centre = framing.values(x);
+    const double centre_yaw = to_centre[3], centre_pitch = to_centre[4] - x[4];
+    const Eigen::Vector3d d = *subject - Eigen::Vector3d(x[0], x[1], x[2]);
+    x[3] = signed_degrees(std::atan2(d.x(), d.z()) * kDegrees - (centre_yaw - x[3]));
+    x[4] = std::atan2(d.y(), std::hypot(d.x(), d.z())) * kDegrees - centre_pitch;
     candidates.emplace_back(framing.score(x), x);
     ++evaluations;
   };
@@ -241,6 +269,26 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     x[4] = start[4] - base[4];
     candidates.emplace_back(framing.score(x), x);
     ++evaluations;
+  }
+  // Two subjects at screen points: the exact two-subject poses (toric_framing.h), coarsely.
+  ToricFraming toric("toric", ToricFraming::Options{16, 32});
+  if (options_.global && toric.unsuitable_reason(problem).empty()) {
+    solvers::SolveContext coarse;
+    coarse.want_breakdown = false;
+    if (context.limits.time_limit_seconds > 0) {
+      coarse.limits.time_limit_seconds = context.limits.time_limit_seconds / 4;
+    }
+    toric.solve_into(problem, {}, coarse, toric_result_);
+    evaluations += toric_result_.evaluations;
+    if (toric_result_.message.empty()) {
+      Point x{};
+      std::copy(toric_result_.best.begin(), toric_result_.best.end(), x.begin());
+      const csp::Assignment& base = framing.values(x);  // offsets from the centre's direction
+      x[3] = signed_degrees(toric_result_.best[3] - (base[3] - x[3]));
+      x[4] = toric_result_.best[4] - (base[4] - x[4]);
+      candidates.emplace_back(framing.score(x), x);
+      ++evaluations;
+    }
   }
   std::vector<std::pair<int, Vantage>> vantages;
   for (int t : framing.targets()) vantages.emplace_back(t, vantage_of(*owner, t, fov));
@@ -256,37 +304,51 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     group.bearings.insert(group.bearings.end(), v.bearings.begin(), v.bearings.end());
     group.elevations.insert(group.elevations.end(), v.elevations.begin(), v.elevations.end());
   }
-  auto around = [&](const Eigen::Vector3d& aim, Vantage v) {
-    if (v.bearings.empty()) v.bearings = {0, 45, 90, 135, 180, 225, 270, 315};
-    if (v.elevations.empty()) v.elevations = {10, 25};
-    for (double b : v.bearings) {
-      for (double e : v.elevations) add(aim + v.distance * from_bearing(b, e));
+  // Around an aim point at the vantage's distance (and 15% nearer and farther), bearings
+  // (each with its neighbours 15 degrees off) and elevations.
+  auto around = [&](const Eigen::Vector3d& aim, Vantage v, const Eigen::Vector3d* subject) {
+    std::vector<double> bearings;
+    if (v.bearings.empty()) {
+      bearings = {0, 45, 90, 135, 180, 225, 270, 315};
+    } else {
+      for (double b : v.bearings) bearings.insert(bearings.end(), {b, b - 15, b + 15});
+    }
+    if (v.elevations.empty()) v.elevations = {5, 20};
+    for (double b : bearings) {
+      for (double e : v.elevations) {
+        for (double scale : {1.0, 0.85, 1.2}) add(aim + scale * v.distance * from_bearing(b, e), subject);
+      }
     }
   };
-  for (const auto& [t, v] : vantages) {
-    around(owner->world().people()[static_cast<std::size_t>(t)].aim, v);
+  if (options_.global) {
+    for (const auto& [t, v] : vantages) {
+      const Eigen::Vector3d& aim = owner->world().people()[static_cast<std::size_t>(t)].aim;
+      around(aim, v, &aim);
+    }
+    if (framing.targets().size() > 1) around(framing.centre(), group, nullptr);
   }
-  if (framing.targets().size() > 1) around(framing.centre(), group);
   const Aabb& region = shot.region;
-  for (std::int64_t i = 1; i <= options_.samples; ++i) {
+  if (candidates.empty()) add(region.centre());  // neither a start nor a global search
+  for (std::int64_t i = 1; options_.global && i <= options_.samples; ++i) {
     const auto k = static_cast<std::uint64_t>(i);
     add(region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5))
                          .cwiseProduct(region.max - region.min));
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.first.better_than(b.first); });
-  candidates.resize(std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(options_.keep)));
 
   csp::Score best = candidates.front().first;
   Point best_x = candidates.front().second;
   budget.note_best(evaluations);
 
-  // 3. Compass search from each kept candidate.
+  // 3. Compass search from a candidate, in place.
   const Eigen::Vector3d extent = region.max - region.min;
   const double position_step = std::max(0.05, 0.1 * extent.minCoeff());
-  for (auto& [score, x] : candidates) {
-    std::array<double, kDims> step{position_step, position_step, position_step, 4, 4,
-                                   shot.fov.fixed() ? 0.0 : 4.0, shot.roll.fixed() ? 0.0 : 4.0};
+  auto refine = [&](csp::Score& score, Point& x, double scale, double min_step) {
+    std::array<double, kDims> step{position_step * scale, position_step * scale,
+                                   position_step * scale, 4 * scale, 4 * scale,
+                                   shot.fov.fixed() ? 0.0 : 4.0 * scale,
+                                   shot.roll.fixed() ? 0.0 : 4.0 * scale};
     while (!budget.exhausted(evaluations, iterations)) {
       ++iterations;
       bool improved = false;
@@ -318,9 +380,57 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
         s /= 2;
         largest = std::max(largest, s);
       }
-      if (largest < options_.min_step) break;
+      if (largest < min_step) break;
     }
-    if (budget.exhausted(evaluations, iterations)) break;
+  };
+  // Coarsely (to 5 cm and 0.05 degrees) from each of the best few, then finely from the best.
+  const std::size_t keep = std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(options_.keep));
+  const double coarse = std::max(options_.min_step, 0.05);
+  for (std::size_t i = 0; i < keep && !budget.exhausted(evaluations, iterations); ++i) {
+    refine(candidates[i].first, candidates[i].second, options_.global ? 1.0 : 0.25, coarse);
+  }
+  if (!budget.exhausted(evaluations, iterations) && coarse > options_.min_step) {
+    csp::Score score = best;
+    Point x = best_x;
+    refine(score, x, coarse / position_step * 2, options_.min_step);
+  }
+  // 4. With a budget to use (an anytime run): the other candidates in order (coarsely), then
+  // restarts that alternate between the best pose shaken (position by up to a metre, aim by
+  // up to 10 degrees) and a new point of the region's Halton sequence aimed at the targets,
+  // so the search keeps exploring other basins as well as polishing its best.
+  if (context.runs_to_the_limit() && options_.global) {
+    std::mt19937_64 rng(context.seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::size_t next = keep;
+    std::uint64_t halton_index = static_cast<std::uint64_t>(options_.samples);
+    for (std::uint64_t restart = 0; !budget.exhausted(evaluations, iterations); ++restart) {
+      if (next < candidates.size()) {
+        refine(candidates[next].first, candidates[next].second, 1.0, coarse);
+        ++next;
+        continue;
+      }
+      Point x = best_x;
+      double scale = 0.5;
+      if (restart % 2 == 0) {
+        for (int k = 0; k < 3; ++k) x[static_cast<std::size_t>(k)] += unit(rng);
+        x[3] += 10 * unit(rng);
+        x[4] += 10 * unit(rng);
+        if (!shot.fov.fixed()) x[5] += 5 * unit(rng);
+      } else {
+        ++halton_index;
+        const Eigen::Vector3d p =
+            region.min + Eigen::Vector3d(halton(halton_index, 2), halton(halton_index, 3),
+                                         halton(halton_index, 5))
+                             .cwiseProduct(region.max - region.min);
+        x = Point{p.x(), p.y(), p.z(), 0, 0, fov, roll};
+        framing.aim(x);
+        scale = 1.0;
+      }
+      clamp(x);
+      csp::Score score = framing.score(x);
+      ++evaluations;
+      refine(score, x, scale, restart % 2 == 0 ? options_.min_step : coarse);
+    }
   }
   result.best = framing.values(best_x);
   result.evaluations = evaluations;

@@ -6,12 +6,14 @@
 //      properties ask for (size: the body's height over the image height the fov gives),
 //      at the vantage its angle properties ask for (or eight bearings and two elevations
 //      when they ask none), around the group's centre likewise, plus a Halton sample of the
-//      region and the start; each clamped into the region;
+//      region and the start; each clamped into the region; with two subjects at screen
+//      points, the best exact two-subject pose too (toric_framing.h, on a coarse grid);
 //   2. at each, the view aims at the targets (their aim points' centre, then a few Newton
 //      steps putting `screen_position` targets at their points), the lens at its mid value;
 //   3. the best few are refined by a compass search in (position, aim offset, fov, roll),
 //      where the aim offset is relative to the targets' direction, so a step of the camera
-//      keeps its framing; steps halve until `min_step`, or the budget ends.
+//      keeps its framing; steps halve until `min_step`, or the budget ends; with a time
+//      limit the other candidates follow, then restarts from the best pose shaken.
 // Every candidate is scored by the problem itself (csp::Problem::score), so the result is
 // the problem's optimum as far as the search found it, hard constraints first.
 #pragma once
@@ -28,8 +30,11 @@ class ShotSearch : public solvers::Solver {
  public:
   struct Options {
     std::int64_t samples = 32;  // Halton positions in the region
-    std::int64_t keep = 4;      // candidates refined
+    std::int64_t keep = 8;      // candidates refined (coarsely; then the best finely)
     double min_step = 0.005;    // metres and degrees: where the refinement stops
+    // false: only refine the start, with steps a quarter of the global ones (a tracking
+    // camera's frame: the last pose is nearly right).
+    bool global = true;
 
     static const solvers::OptionSchema<Options>& schema();
     std::string validate() const;
@@ -44,6 +49,7 @@ class ShotSearch : public solvers::Solver {
  private:
   std::string name_;
   Options options_;
+  solvers::SolverResult toric_result_;  // reused between solves
 };
 
 }  // namespace sightline::camera

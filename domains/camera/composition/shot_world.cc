@@ -61,24 +61,29 @@ ShotWorld::ShotWorld(const Scene& scene, double t) : scene_(&scene) {
   set_time(t);
 }
 
-void ShotWorld::set_time(double t) {
+void ShotWorld::set_time(double t, double lead) {
   t_ = t;
   std::size_t i = 0;
   if (scene_->has_character()) {
     const CharacterState s = scene_->character_at(t);
-    people_[0].body = scene_->character().body_at(s.position);
-    people_[0].aim = scene_->character().look_at(s.position);
+    const Eigen::Vector3d at = s.position + lead * s.velocity;
+    people_[0].body = scene_->character().body_at(at);
+    people_[0].aim = scene_->character().look_at(at);
     people_[0].yaw = s.yaw;
     i = 1;
   }
   for (const Actor& actor : scene_->actors()) {
     const CharacterState s = actor.state_at(t);
-    people_[i].body = actor.shape.body_at(s.position);
-    people_[i].aim = actor.shape.look_at(s.position);
+    const Eigen::Vector3d at = s.position + lead * s.velocity;
+    people_[i].body = actor.shape.body_at(at);
+    people_[i].aim = actor.shape.look_at(at);
     people_[i].yaw = s.yaw;
     ++i;
   }
-  for (std::size_t m = 0; m < movers_.size(); ++m) movers_[m] = scene_->movers()[m].box_at(t);
+  for (std::size_t m = 0; m < movers_.size(); ++m) {
+    const Mover& mover = scene_->movers()[m];
+    movers_[m] = Aabb::around_feet(mover.position_at(t) + lead * mover.velocity_at(t), mover.size());
+  }
 }
 
 std::optional<int> ShotWorld::find(const std::string& name) const {

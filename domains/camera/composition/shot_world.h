@@ -40,7 +40,9 @@ class ShotWorld {
   // `scene` must outlive the world. The followed character is a person when the scene has
   // one (named scene.character_name()).
   ShotWorld(const Scene& scene, double t);
-  void set_time(double t);
+  // Everyone where they are at t, or, with lead > 0, where they will be `lead` seconds
+  // later if they keep their velocity at t (a forecast: a game knows no more).
+  void set_time(double t, double lead = 0);
   double time() const { return t_; }
   const Scene& scene() const { return *scene_; }
 

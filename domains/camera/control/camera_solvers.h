@@ -9,6 +9,9 @@
 
 namespace sightline::camera {
 
+// The camera solver `follow`, the library and the suites use when none is named.
+inline constexpr const char* kRecommendedCameraSolver = "occlusion-octree";
+
 // Adds bourne-octree and occlusion-octree to `registry`; calling it again is harmless.
 void register_camera_solvers(solvers::SolverRegistry& registry);
 // The global registry with the camera's solvers in it.

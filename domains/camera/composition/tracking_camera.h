@@ -1,0 +1,77 @@
+// TrackingCamera: films a scene's shot: block every frame (a tracking shot, FORMATS.md
+// "Shots"): the camera holds the composition while the people move, moving smoothly, and
+// cuts only when the shot cannot be kept.
+//
+// Each frame: the shot's problem is set to where the people will be `lead_seconds` on
+// (their positions and velocities now: a forecast, as a game would make); the pose the
+// camera aims for is refined from the last one (shot-search without its global phase, a small budget), and
+// a global solve (the configured solver, a larger budget) replaces it when that pose is
+// infeasible or its satisfaction falls `resolve_drop` below the best the last global solve
+// found. The camera then follows the aimed-for pose through two first-order stages (the
+// aimed-for pose low-passed, then a spring toward that; time constant `smoothing` each),
+// bounded by max_speed; the look direction, fov and roll alike.
+// When the camera's own pose breaks the shot (a rule, or a visible property below its range)
+// while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there,
+// never twice within `min_shot_seconds`.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "sightline/domains/camera/camera_controller.h"
+#include "sightline/domains/camera/composition/composition_problem.h"
+#include "sightline/solvers/solver.h"
+
+namespace sightline::camera {
+
+struct TrackingOptions {
+  std::string solver = "shot-search";   // the global solve (any composition solver)
+  // Budgets in evaluations of the shot, not seconds, so a run is the same on any machine
+  // under any load (about 2 us each with four people among boxes).
+  std::uint64_t frame_evaluations = 120;    // the per-frame local refinement
+  std::uint64_t resolve_evaluations = 800;  // a global solve
+  double resolve_drop = 0.1;             // satisfaction lost before a global solve
+  double max_speed = 8.0;                // m/s: longer moves are cuts
+  double smoothing = 0.15;               // s: each of the two stages' time constant
+  double min_shot_seconds = 1.0;         // never two cuts closer than this
+  double lead_seconds = 0.3;             // the aimed-for pose is solved this far ahead
+  std::uint64_t seed = 1;
+};
+
+class TrackingCamera : public CameraController {
+ public:
+  // `scene` (with its shot) must outlive the camera. Throws std::invalid_argument for a
+  // scene without a shot or a solver that cannot compose it.
+  TrackingCamera(const Scene& scene, TrackingOptions options);
+  std::string name() const override { return "tracking " + options_.solver; }
+  const CameraFrame& update(const CharacterState& character, double dt) override;
+  void reset(const Eigen::Vector3d& position) override;
+  double max_step(double dt) const override { return options_.max_speed * dt; }
+
+  const CameraPose& pose() const { return pose_; }
+  // How the camera's pose does on the shot this frame (FORMATS.md's definitions).
+  const ShotEvaluation& evaluation() const { return evaluation_; }
+
+ private:
+  void solve_globally(std::uint64_t evaluations);
+  void move_toward(double dt);
+  void jump_to_aim();
+  bool hides_someone(const ShotEvaluation& e) const;
+
+  const Scene* scene_;
+  TrackingOptions options_;
+  CompositionProblem problem_;
+  std::unique_ptr<solvers::Solver> local_, global_;
+  solvers::SolveContext local_context_, global_context_;
+  solvers::SolverResult result_;
+  csp::Assignment aim_;          // the pose aimed for, as the problem's assignment
+  double aim_satisfaction_ = 0;  // of the last global solve
+  CameraPose pose_;              // where the camera is
+  CameraPose filtered_;          // the aimed-for pose low-passed (look_at: a unit direction)
+  ShotEvaluation evaluation_;
+  CameraFrame frame_;
+  double t_ = 0, last_cut_t_ = -1e9;
+  bool started_ = false;
+};
+
+}  // namespace sightline::camera
