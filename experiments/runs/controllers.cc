@@ -5,6 +5,7 @@
 #include "sightline/domains/camera/baselines/pull_forward.h"
 #include "sightline/domains/camera/baselines/spring_arm.h"
 #include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/composition/group_framing.h"
 #include "sightline/domains/camera/composition/tracking_camera.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
 
@@ -13,6 +14,9 @@ namespace sightline::camera {
 std::unique_ptr<CameraController> make_controller(const std::string& name, const Scene& scene,
                                                   const CameraProfile& profile,
                                                   const ChaseCameraOptions& options) {
+  if (scene.shot() && name == "group-framing") {
+    return std::make_unique<GroupFraming>(scene, options.max_speed);
+  }
   if (scene.shot()) {
     // A scene with a shot: block is filmed as a tracking shot, by default with the
     // recommended composition solver (FORMATS.md "The follow command").

@@ -54,6 +54,14 @@ TEST(TrackingShots, EveryShippedShotSceneIsFilmedSmoothlyWithinTheShotsRules) {
     std::printf("; satisfaction mean %.3f p10 %.3f; %d cuts\n", run.shot->satisfaction_mean,
                 run.shot->satisfaction_p10, m.cuts);
     EXPECT_GT(run.shot->shown_percent_min, 50) << path;
+    // The engines' group camera on the same scene, for the record.
+    camera::ChaseCameraOptions group;
+    group.solver = "group-framing";
+    const CameraRun baseline = run_camera(scene, scene.profile(), group);
+    std::printf("%-20s", "  group-framing");
+    for (const PersonShown& p : baseline.shot->people) std::printf(" %s %.1f%%", p.name.c_str(), p.shown_percent);
+    std::printf("; satisfaction mean %.3f p10 %.3f; %d cuts\n", baseline.shot->satisfaction_mean,
+                baseline.shot->satisfaction_p10, baseline.metrics.cuts);
   }
 }
 
