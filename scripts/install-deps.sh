@@ -17,6 +17,8 @@ packages=(
   openmpi-bin libopenmpi-dev
   # The report's 3D replay (three.js, inlined) and its check in a real headless browser.
   libjs-three chromium
+  # The Python module (pybind11), its tests (pytest) and examples (numpy, matplotlib).
+  python3-dev pybind11-dev python3-pytest python3-numpy python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
