@@ -12,6 +12,7 @@ namespace sightline::csp {
 namespace {
 
 constexpr double kMaxExact = 9007199254740992.0;  // 2^53
+constexpr std::size_t kMaxExpandedTuples = 1'000'000;
 
 // A weighted cost as a .wcsp integer; refuses what would not read back exactly.
 std::int64_t integer_cost(const Constraint& c, double cost) {
@@ -38,6 +39,48 @@ std::int64_t largest_cost(const Constraint& c) {
   return integer_cost(c, c.distinctness()->counts_variables ? k - 1 : k * (k - 1) / 2);
 }
 
+// A constraint of any other kind over finite domains, as the cost of every tuple of its
+// scope's domains (in odometer order, the last variable fastest), weighted: its violation
+// asked of the constraint itself with the rest of the assignment at the domains' first
+// values. At most kMaxExpandedTuples tuples per constraint.
+struct Expanded {
+  std::vector<double> violations;  // per tuple
+};
+
+Expanded expand(const Problem& problem, const Constraint& c) {
+  const auto scope = c.scope();
+  double count = 1;
+  for (VariableId v : scope) count *= static_cast<double>(problem.domain(v).size());
+  if (count > static_cast<double>(kMaxExpandedTuples)) {
+    std::ostringstream message;
+    message << "cannot write " << c.describe() << " to .wcsp: as a cost table it has " << count
+            << " tuples, more than the " << kMaxExpandedTuples << " a constraint may expand to";
+    throw std::invalid_argument(message.str());
+  }
+  Expanded e;
+  e.violations.reserve(static_cast<std::size_t>(count));
+  std::vector<double> values(problem.num_variables());
+  for (VariableId v = 0; v < problem.num_variables(); ++v) values[v] = problem.domain(v).value_at(0);
+  std::vector<std::size_t> digit(scope.size(), 0);
+  for (std::size_t i = 0; i < scope.size(); ++i) values[scope[i]] = problem.domain(scope[i]).value_at(0);
+  while (true) {
+    e.violations.push_back(c.violation(values));
+    std::size_t p = scope.size();
+    while (p > 0) {
+      --p;
+      const Domain& d = problem.domain(scope[p]);
+      if (++digit[p] < d.size()) {
+        values[scope[p]] = d.value_at(digit[p]);
+        break;
+      }
+      digit[p] = 0;
+      values[scope[p]] = d.value_at(0);
+      if (p == 0) return e;
+    }
+    if (scope.empty()) return e;
+  }
+}
+
 }  // namespace
 
 void write_wcsp(const Problem& problem, std::ostream& out) {
@@ -51,29 +94,35 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
   }
   // Check the kinds and find the upper bound before writing anything.
   std::int64_t ub = 1;
+  // Constraints that are neither tables nor salldiff-able all_differents become cost tables.
+  std::vector<std::optional<Expanded>> expanded(problem.num_constraints());
   for (ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const Constraint& c = problem.constraint(id);
-    const std::optional<Distinctness> a = c.distinctness();
-    if (!c.table_costs() && !(a && a->zero_offsets)) {
-      throw std::invalid_argument("cannot write " + c.describe() +
-                                  " to .wcsp: only table and all_different (without offsets) "
-                                  "constraints can be written");
-    }
+    std::optional<Distinctness> a = c.distinctness();
+    bool salldiff = a && a->zero_offsets;
     // salldiff compares value indices: equal indices mean equal values only when every
-    // variable of the scope has the same domain.
-    if (a) {
+    // variable of the scope has the same domain; otherwise it is written as a table too.
+    if (salldiff) {
       const Domain& first = problem.domain(c.scope()[0]);
       for (VariableId v : c.scope()) {
         const Domain& d = problem.domain(v);
         bool same = d.size() == first.size();
-        for (std::size_t i = 0; same && i < d.size(); ++i)
-          same = d.value_at(i) == first.value_at(i);
-        if (!same) {
-          throw std::invalid_argument("cannot write " + c.describe() +
-                                      " to .wcsp: salldiff compares value indices, so its "
-                                      "variables must share one domain");
-        }
+        for (std::size_t i = 0; same && i < d.size(); ++i) same = d.value_at(i) == first.value_at(i);
+        salldiff = salldiff && same;
       }
+    }
+    if (!c.table_costs() && !salldiff) {
+      expanded[id] = expand(problem, c);
+      if (!c.is_hard()) {
+        double largest = 0;
+        for (double v : expanded[id]->violations) largest = std::max(largest, v);
+        ub += integer_cost(c, largest);
+        for (double v : expanded[id]->violations) integer_cost(c, v);  // each must be exact
+      }
+      if (static_cast<double>(ub) > kMaxExact) {
+        throw std::invalid_argument("cannot write to .wcsp: the total soft cost exceeds 2^53");
+      }
+      continue;
     }
     if (!c.is_hard()) ub += largest_cost(c);
     if (static_cast<double>(ub) > kMaxExact) {
@@ -99,6 +148,27 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
     const auto scope = c.scope();
     out << scope.size();
     for (VariableId v : scope) out << " " << v;
+    if (expanded[id]) {
+      // Every tuple whose cost is not 0, the default.
+      std::ostringstream tuples;
+      std::size_t count = 0, index = 0;
+      std::vector<std::size_t> digit(scope.size(), 0);
+      for (double violation : expanded[id]->violations) {
+        const std::int64_t cost = cost_text(c, violation);
+        if (cost != 0) {
+          for (std::size_t p = 0; p < scope.size(); ++p) tuples << digit[p] << " ";
+          tuples << cost << "\n";
+          ++count;
+        }
+        ++index;
+        for (std::size_t p = scope.size(); p-- > 0;) {
+          if (++digit[p] < problem.domain(scope[p]).size()) break;
+          digit[p] = 0;
+        }
+      }
+      out << " 0 " << count << "\n" << tuples.str();
+      continue;
+    }
     if (const std::optional<Distinctness> a = c.distinctness()) {
       out << " -1 salldiff " << a->measure_name << " "
           << (c.is_hard() ? ub : integer_cost(c, 1.0)) << "\n";

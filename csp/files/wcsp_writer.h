@@ -1,9 +1,12 @@
 // Writing a Problem as toulbar2's .wcsp, so toulbar2 can solve what the project builds
 // (a problem file's tables, a .wcsp read and re-written) and the two be compared.
 //
-// The problem must be discrete and made of `table` and `all_different` (zero offsets, and
-// one domain shared by its variables, since salldiff compares value indices) constraints
-// whose weighted costs are integers: .wcsp costs are integers and it has nothing else.
+// The problem must be discrete with integer weighted costs (.wcsp costs are integers).
+// `table` constraints are written as their tables, `all_different` (zero offsets, one domain
+// shared by its variables, since salldiff compares value indices) as salldiff, and every
+// other constraint (not_equal, linear, abs_deviation, expression, any registered kind) as
+// the cost table of its scope's domains, its violation asked of the constraint itself for
+// each tuple (at most 1,000,000 tuples per constraint; more is refused naming it).
 // Values are written as their index in the variable's domain, in domain order. The upper
 // bound is 1 + the largest total soft cost (the sum over soft constraints of their largest
 // weighted cost), so no soft cost is mistaken for "forbidden"; hard constraints write their
@@ -19,7 +22,7 @@
 namespace sightline::csp {
 
 // Writes `problem` in .wcsp format. Throws std::invalid_argument naming the first thing it
-// cannot express (a continuous variable, another constraint kind, a non-integer cost).
+// cannot express (a continuous variable, a non-integer cost, a table too large).
 void write_wcsp(const Problem& problem, std::ostream& out);
 
 }  // namespace sightline::csp

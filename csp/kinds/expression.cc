@@ -30,6 +30,18 @@ bool is_identifier(const std::string& name) {
   return true;
 }
 
+// Integer functions a model needs for derived values (a slot from a slot-room number, ...):
+// floor, ceil, mod (the remainder with the sign of the divisor, as in Python) and idiv (the
+// floor of the quotient); a zero divisor gives NaN, which counts as undefined.
+double floor_of(double x) { return std::floor(x); }
+double ceil_of(double x) { return std::ceil(x); }
+double mod_of(double a, double b) {
+  return b == 0 ? std::numeric_limits<double>::quiet_NaN() : a - b * std::floor(a / b);
+}
+double idiv_of(double a, double b) {
+  return b == 0 ? std::numeric_limits<double>::quiet_NaN() : std::floor(a / b);
+}
+
 }  // namespace
 
 ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
@@ -46,6 +58,10 @@ ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
   Compiled& c = *compiled_;
   c.buffer.assign(arity + num_parameters, 0.0);
   try {
+    c.parser.DefineFun("floor", floor_of);
+    c.parser.DefineFun("ceil", ceil_of);
+    c.parser.DefineFun("mod", mod_of);
+    c.parser.DefineFun("idiv", idiv_of);
     for (std::size_t i = 0; i < arity; ++i) {
       if (!is_identifier(names[i])) {
         throw std::invalid_argument("variable '" + names[i] +

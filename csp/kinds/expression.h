@@ -6,6 +6,8 @@
 //     "x - 2"          x <= 2, violation the excess over 2
 //     "x + y != 3"     comparisons are 0/1, so this is a 0/1 constraint
 //     "abs(x - y)"     a deviation
+//     "idiv(x, 3) == idiv(y, 3)"   integer functions: floor, ceil, mod (sign of the
+//                      divisor, as Python's %), idiv (floor of the quotient); min, max, abs
 // A formula that is undefined somewhere (sqrt of a negative, 0/0, 1/0) yields NaN or +inf; that
 // point counts as violated by kUndefinedViolation so that search moves away from it instead
 // of poisoning every sum with NaN.

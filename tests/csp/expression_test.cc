@@ -35,6 +35,19 @@ TEST(ExpressionConstraint, ValueIsTheViolationWithNegativesClampedToZero) {
   EXPECT_FALSE(p->constraint(0).has_exact_gradient());
 }
 
+TEST(ExpressionConstraint, IntegerFunctionsForDerivedValues) {
+  // idiv and mod as Python's // and %, floor and ceil; a zero divisor is undefined.
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("idiv(x, 3)"), 7, 0), 2);
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("-idiv(x, 3)"), -7, 0), 3);  // -7 // 3 = -3
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("mod(x, 3)"), 7, 0), 1);
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("mod(x, 3)"), -7, 0), 2);    // -7 % 3 = 2
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("floor(x)"), 2.7, 0), 2);
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("ceil(x)"), 2.2, 0), 3);
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("idiv(x, 3) != idiv(y, 3)"), 4, 5), 0);
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("idiv(x, 3) != idiv(y, 3)"), 4, 7), 1);
+  EXPECT_GE(violation_at(*with_formula("mod(x, y)"), 4, 0), 1e9);
+}
+
 TEST(ExpressionConstraint, ComparisonsMakeZeroOneConstraints) {
   const auto p = with_formula("x + y != 3");
   EXPECT_EQ(violation_at(*p, 1, 2), 0);

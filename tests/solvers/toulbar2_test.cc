@@ -11,7 +11,9 @@
 #include <random>
 
 #include "sightline/csp/files/wcsp_reader.h"
+#include "sightline/csp/kinds/builder.h"
 #include "sightline/csp/kinds/table.h"
+#include "sightline/domains/colouring/colouring_problem.h"
 #include "sightline/solvers/registry.h"
 
 namespace sightline::solvers {
@@ -123,6 +125,64 @@ TEST(Toulbar2Solver, DeclaresUnsuitableWhatDotWcspCannotHold) {
       std::vector<csp::VariableId>{x}, std::vector<csp::Table::Entry>{{{1}, 0.5}}, 0.0));
   EXPECT_NE(toulbar2()->unsuitable_reason(fractional).find("integer"), std::string::npos)
       << toulbar2()->unsuitable_reason(fractional);
+}
+
+}  // namespace
+}  // namespace sightline::solvers
+
+namespace sightline::solvers {
+namespace {
+
+// toulbar2 on models made of any kinds (each written as a cost table, wcsp_writer.h): a
+// 12-meeting timetable of not_equal, linear, abs_deviation and expression constraints, and
+// the colouring problems of `compare`, each with the optimum bnb proves.
+void expect_same_optimum_as_bnb(const csp::Problem& problem) {
+  SolveContext context;
+  context.limits.max_iterations = 5'000'000;
+  const SolverResult exact = SolverRegistry::global().create("bnb")->solve(
+      problem, problem.default_assignment(), context);
+  ASSERT_EQ(exact.stop, StopReason::kProvenOptimal) << problem.name();
+  const SolverResult r = toulbar2()->solve(problem, problem.default_assignment(), {});
+  EXPECT_EQ(r.stop, StopReason::kProvenOptimal) << r.brief_report("toulbar2");
+  EXPECT_EQ(r.cost(), exact.cost()) << problem.name() << ": " << r.brief_report("toulbar2");
+  EXPECT_EQ(problem.score(r.best).soft, r.cost()) << problem.name();
+}
+
+TEST(Toulbar2Solver, SolvesATimetableOfAnyKindsWithBnbsOptimum) {
+  SKIP_WITHOUT_TOULBAR2();
+  // 12 meetings in 4 slots of 3 rooms: m<i> = slot * 3 + room, 0..11. Meetings sharing a
+  // person are in different slots (hard, an expression over integer division); meetings are
+  // all in different slot-rooms (not_equal, hard); some want early slots (linear, soft);
+  // some want a given room (abs_deviation of the room, soft, weight 2).
+  csp::ProblemBuilder b("meetings");
+  for (int i = 0; i < 12; ++i) b.integer("m" + std::to_string(i), 0, 11);
+  for (int i = 0; i < 12; ++i) {
+    for (int j = i + 1; j < 12; ++j) b.constrain("not_equal", {"m" + std::to_string(i), "m" + std::to_string(j)}, {}, 1, true);
+  }
+  const int shared[][2] = {{0, 1}, {1, 2}, {2, 3}, {4, 5}, {5, 6}, {0, 7}, {8, 9}, {9, 10}, {10, 11}, {3, 8}};
+  for (const auto& p : shared) {
+    const std::string a = "m" + std::to_string(p[0]), c = "m" + std::to_string(p[1]);
+    b.constrain("expression", {a, c},
+                csp::spec_from({{"formula", "floor(" + a + " / 3) == floor(" + c + " / 3)"}}), 1, true);
+  }
+  for (int i : {0, 4, 8}) {
+    b.constrain("linear", {"m" + std::to_string(i)}, csp::spec_from({{"op", "<="}, {"rhs", 5}}), 1);
+  }
+  for (int i : {1, 5, 9, 11}) {
+    b.constrain("abs_deviation", {"m" + std::to_string(i)}, csp::spec_from({{"target", 7}}), 2);
+  }
+  const auto problem = b.build();
+  expect_same_optimum_as_bnb(*problem);
+}
+
+TEST(Toulbar2Solver, SolvesTheColouringProblemsOfCompareWithBnbsOptimum) {
+  SKIP_WITHOUT_TOULBAR2();
+  const std::string graphs = std::string(SIGHTLINE_SOURCE_DIR) + "/examples/graphs/";
+  for (const auto& [file, colours] : std::vector<std::pair<std::string, int>>{
+           {"australia.yaml", 3}, {"australia.yaml", 2}, {"queen5_5.col", 5}, {"myciel5.col", 6}}) {
+    const auto problem = colouring::build_colouring_problem(colouring::read_graph_file(graphs + file), colours);
+    expect_same_optimum_as_bnb(*problem);
+  }
 }
 
 }  // namespace

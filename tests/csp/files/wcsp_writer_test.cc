@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sightline/csp/kinds/builder.h"
+
 #include <random>
 #include <sstream>
 
@@ -93,31 +95,83 @@ TEST(WcspWriter, KeepsWeightedCostsAndWritesValuesAsDomainIndices) {
 }
 
 TEST(WcspWriter, RefusesWhatWcspCannotExpress) {
-  Problem p;
-  p.add_variable("x", Domain::integer_range(0, 1));
-  p.add_variable("y", Domain::integer_range(0, 1));
-  p.add_constraint(std::make_unique<NotEqual>(0, 1));
   std::ostringstream out;
-  try {
-    write_wcsp(p, out);
-    FAIL() << "expected std::invalid_argument";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("not_equal"), std::string::npos) << e.what();
-  }
   Problem q;
   q.add_variable("x", Domain::integer_range(0, 1));
   q.add_constraint(std::make_unique<Table>(std::vector<VariableId>{0},
                                            std::vector<Table::Entry>{{{0}, 0.5}}, 0));
-  EXPECT_THROW(write_wcsp(q, out), std::invalid_argument);
+  try {
+    write_wcsp(q, out);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not a non-negative integer"), std::string::npos) << e.what();
+  }
   Problem r;
   r.add_variable("x", Domain::real_interval(0, 1));
   EXPECT_THROW(write_wcsp(r, out), std::invalid_argument);
-  // salldiff compares indices: value 1 of {0, 1} and value 1 of {1, 2} have different ones.
-  Problem s;
-  s.add_variable("x", Domain::integer_range(0, 1));
-  s.add_variable("y", Domain::integer_range(1, 2));
-  s.add_constraint(std::make_unique<AllDifferent>(std::vector<VariableId>{0, 1}));
-  EXPECT_THROW(write_wcsp(s, out), std::invalid_argument);
+  // Too large to expand: 1001^2 tuples.
+  Problem big;
+  big.add_variable("x", Domain::integer_range(0, 1000));
+  big.add_variable("y", Domain::integer_range(0, 1000));
+  big.add_constraint(std::make_unique<NotEqual>(0, 1));
+  try {
+    write_wcsp(big, out);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tuples"), std::string::npos) << e.what();
+  }
+}
+
+// Every built-in kind over finite domains goes to .wcsp as a cost table: read back, the
+// problem scores every assignment as the kind itself does (soft: the weighted cost; hard:
+// feasibility), on random assignments of small random problems.
+TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
+  struct Case {
+    std::string kind;
+    std::vector<std::string> scope;
+    Spec params;
+    double weight;
+    bool hard;
+  };
+  const std::vector<Case> cases = {
+      {"not_equal", {"a", "b"}, Spec(), 3, false},
+      {"not_equal", {"a", "c"}, Spec(), 1, true},
+      {"linear", {"a", "b", "c"}, spec_from({{"coefficients", std::vector<double>{1, 2, -1}}, {"op", "<="}, {"rhs", 2}}), 2, false},
+      {"linear", {"a", "c"}, spec_from({{"op", "=="}, {"rhs", 3}}), 1, true},
+      {"abs_deviation", {"b"}, spec_from({{"target", 1}}), 1, false},
+      {"expression", {"a", "b"}, spec_from({{"formula", "abs(a - 2*b)"}}), 1, false},
+      {"all_different", {"a", "b", "c"}, spec_from({{"offsets", std::vector<double>{0, 1, 2}}}), 4, false},
+      {"all_different", {"a", "b", "d"}, Spec(), 1, false},  // d's domain differs: a table
+  };
+  std::mt19937_64 rng(11);
+  for (const Case& k : cases) {
+    ProblemBuilder b("kind-" + k.kind);
+    b.integer("a", 0, 3);
+    b.integer("b", -1, 2);
+    b.integer("c", 0, 4);
+    b.values("d", {0, 2, 5});
+    b.constrain(k.kind, k.scope, k.params.is_map() ? k.params : Spec::map({}), k.weight, k.hard);
+    const std::unique_ptr<Problem> original = b.build();
+    std::stringstream text;
+    write_wcsp(*original, text);
+    const std::unique_ptr<Problem> back = parse_wcsp(text, "kind.wcsp");
+    ASSERT_EQ(back->num_variables(), original->num_variables()) << k.kind;
+    for (int trial = 0; trial < 200; ++trial) {
+      std::vector<double> values(4), indices(4);
+      for (VariableId v = 0; v < 4; ++v) {
+        const Domain& d = original->domain(v);
+        const std::size_t i = std::uniform_int_distribution<std::size_t>(0, d.size() - 1)(rng);
+        values[v] = d.value_at(i);
+        indices[v] = back->domain(v).value_at(i);  // .wcsp values are domain indices
+      }
+      const Score want = original->score(values);
+      const Score got = back->score(indices);
+      EXPECT_EQ(want.feasible(), got.feasible()) << k.kind << " trial " << trial;
+      if (want.feasible()) {
+        EXPECT_NEAR(want.soft, got.soft, 1e-9) << k.kind << " trial " << trial;
+      }
+    }
+  }
 }
 
 }  // namespace
