@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help arrives as a ParseError
     std::cerr << "sightline: " << e.what() << " (see --help)\n";
     return 2;
+  } catch (const apps::Interrupted& e) {
+    std::cout.flush();
+    std::cerr << "sightline: " << e.what() << '\n';
+    return 130;
   } catch (const apps::RunFailed& e) {
     std::cout.flush();
     std::cerr << "sightline: " << e.what() << '\n';

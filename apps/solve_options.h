@@ -50,4 +50,11 @@ class RunFailed : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Thrown by a command that Ctrl-C or SIGTERM stopped after it saved what was done; main
+// prints the message (how to go on) and exits with status 130.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace sightline::apps

@@ -1,5 +1,8 @@
 #include "sightline/experiments/execution/isolated_run.h"
 
+#include "sightline/experiments/execution/interruption.h"
+#include "sightline/experiments/execution/suite_runner.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -73,6 +76,12 @@ RunResult run_isolated(const Suite& suite, const SuiteRun& run, const std::strin
   argv.insert(argv.end(), {"--command-line", this_process_provenance().command_line});
   const ChildOutcome child = run_child(argv, log_path, limits);
   if (child.how == "spawn-failed") throw std::runtime_error(child.note);
+  if (child.how == "crash" && interruption_requested()) {
+    // Ctrl-C reached the child too: not this run's failure. Nothing of it stays.
+    remove_quietly(log_path);
+    remove_quietly(result_path);
+    throw RunAbandoned("run " + run.id + " abandoned: the suite was interrupted");
+  }
 
   const bool log_empty = [&] {
     std::error_code ec;

@@ -1,5 +1,9 @@
 #include "sightline/experiments/execution/suite_runner.h"
 
+#include <atomic>
+
+#include "sightline/experiments/execution/interruption.h"
+
 #include "sightline/experiments/runs/output_text.h"
 
 #include <unistd.h>
@@ -366,14 +370,20 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
                     state.reused);
   std::mutex error_mutex;
   std::string write_error;
+  std::atomic<std::size_t> ran{0}, abandoned{0};
   {
+    const InterruptionHandlers handlers;  // Ctrl-C / SIGTERM: stop starting runs
     boost::asio::thread_pool pool(jobs);
     for (std::size_t i : pending) {
       boost::asio::post(pool, [&, i] {
+        if (interruption_requested()) return;
         try {
           state.results[i] =
               run_and_record(suite, state.runs[i], options.out_dir, options.isolation);
           state.finished[i] = 1;
+          ++ran;
+        } catch (const RunAbandoned&) {
+          ++abandoned;
         } catch (const std::exception& e) {
           std::lock_guard<std::mutex> lock(error_mutex);
           write_error = e.what();
@@ -387,7 +397,9 @@ SuiteOutcome run_suite(const Suite& suite, const RunnerOptions& options) {
   if (!write_error.empty()) throw std::runtime_error(write_error);
 
   SuiteOutcome outcome = write_suite_outputs(suite, options.out_dir, state);
-  outcome.ran = pending.size();
+  outcome.ran = ran;
+  outcome.interrupted = interruption_requested();
+  outcome.abandoned = abandoned;
   outcome.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_atomically((fs::path(options.out_dir) / "summary.md").string(),

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,13 @@ struct RunnerOptions {
 // judge's count for `best`, -1 when there is none) is above 0.
 std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignment& best,
                                const csp::Score& reported, long long broken);
+
+// Thrown by run_and_record for an isolated run whose child an interruption killed: it
+// leaves no result and no log, and the suite runs it again when resumed.
+class RunAbandoned : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // Runs one combination now (no files). Exceptions become status "failed".
 RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path);

@@ -49,6 +49,8 @@ struct SuiteOutcome {
   std::size_t not_ok = 0;    // timeout, memout, crash or wrong (this invocation or earlier)
   std::vector<RunResult> results;  // every finished run, in the suite's order
   double seconds = 0;
+  bool interrupted = false;  // SIGINT or SIGTERM stopped it (execution/interruption.h)
+  std::size_t abandoned = 0; // runs in flight the interruption killed (left to run again)
 };
 
 // What an output folder holds for a suite: every run of expand_runs(suite), which of them
