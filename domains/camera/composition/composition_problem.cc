@@ -127,6 +127,20 @@ ShotEvaluation CompositionProblem::evaluate(const CameraPose& pose) const {
   return e;
 }
 
+const CompositionProblem* composition_of(const csp::Problem& problem) {
+  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
+    if (const auto* c = dynamic_cast<const ShotPropertyConstraint*>(&problem.constraint(id))) {
+      return &c->owner();
+    }
+  }
+  return nullptr;
+}
+
+double signed_degrees(double a) {
+  a = std::fmod(a + 180.0, 360.0);
+  return (a < 0 ? a + 360.0 : a) - 180.0;
+}
+
 ShotPropertyConstraint::ShotPropertyConstraint(const CompositionProblem& owner, std::size_t index,
                                                const ShotPropertyKind& kind)
     : Constraint({0, 1, 2, 3, 4, 5, 6}, owner.shot().properties[index].weight,

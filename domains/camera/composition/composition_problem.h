@@ -71,6 +71,13 @@ class CompositionProblem {
   std::vector<std::vector<int>> targets_;
 };
 
+// The composition problem a csp::Problem was built by (found through its property
+// constraints), or null: how the composition solvers recognise a shot.
+const CompositionProblem* composition_of(const csp::Problem& problem);
+
+// Degrees into [-180, 180).
+double signed_degrees(double degrees);
+
 // One property as a constraint over the seven pose variables. Camera-aware solvers find the
 // shot through it (dynamic_cast): its property, kind, targets and world.
 class ShotPropertyConstraint : public csp::Constraint {

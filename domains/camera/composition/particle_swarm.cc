@@ -11,15 +11,6 @@ namespace {
 
 constexpr int kDims = 7;
 
-const CompositionProblem* owner_of(const csp::Problem& problem) {
-  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
-    if (const auto* c = dynamic_cast<const ShotPropertyConstraint*>(&problem.constraint(id))) {
-      return &c->owner();
-    }
-  }
-  return nullptr;
-}
-
 }  // namespace
 
 const solvers::OptionSchema<ParticleSwarm::Options>& ParticleSwarm::Options::schema() {
@@ -39,13 +30,13 @@ const solvers::OptionSchema<ParticleSwarm::Options>& ParticleSwarm::Options::sch
 std::string ParticleSwarm::Options::validate() const { return ""; }
 
 std::string ParticleSwarm::unsuitable_reason(const csp::Problem& problem) const {
-  return owner_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
+  return composition_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
 }
 
 void ParticleSwarm::solve_into(const csp::Problem& problem, std::span<const double> /*start*/,
                                const solvers::SolveContext& context,
                                solvers::SolverResult& result) {
-  const CompositionProblem* owner = owner_of(problem);
+  const CompositionProblem* owner = composition_of(problem);
   if (!owner) throw std::invalid_argument(name_ + ": " + unsuitable_reason(problem));
   solvers::Budget budget(context.limits, 1);
   std::mt19937_64 rng(context.seed);

@@ -20,15 +20,6 @@ constexpr double kRadians = 3.14159265358979323846 / 180.0;
 constexpr int kDims = 7;  // x, y, z, yaw offset, pitch offset, fov, roll
 using Point = std::array<double, kDims>;
 
-const CompositionProblem* owner_of(const csp::Problem& problem) {
-  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
-    if (const auto* c = dynamic_cast<const ShotPropertyConstraint*>(&problem.constraint(id))) {
-      return &c->owner();
-    }
-  }
-  return nullptr;
-}
-
 double halton(std::uint64_t index, std::uint64_t base) {
   double f = 1, r = 0;
   while (index > 0) {
@@ -37,11 +28,6 @@ double halton(std::uint64_t index, std::uint64_t base) {
     index /= base;
   }
   return r;
-}
-
-double signed_degrees(double a) {
-  a = std::fmod(a + 180.0, 360.0);
-  return (a < 0 ? a + 360.0 : a) - 180.0;
 }
 
 double mid(const ValueRange& r, double fallback) {
@@ -223,12 +209,12 @@ const solvers::OptionSchema<ShotSearch::Options>& ShotSearch::Options::schema() 
 std::string ShotSearch::Options::validate() const { return ""; }
 
 std::string ShotSearch::unsuitable_reason(const csp::Problem& problem) const {
-  return owner_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
+  return composition_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
 }
 
 void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double> start,
                             const solvers::SolveContext& context, solvers::SolverResult& result) {
-  const CompositionProblem* owner = owner_of(problem);
+  const CompositionProblem* owner = composition_of(problem);
   if (!owner) throw std::invalid_argument(name_ + ": " + unsuitable_reason(problem));
   solvers::Budget budget(context.limits, 1);
   Framing framing(problem, *owner);

@@ -20,15 +20,6 @@ struct Subjects {
   Eigen::Vector2d sa, sb;  // wanted screen points
 };
 
-const CompositionProblem* owner_of(const csp::Problem& problem) {
-  for (csp::ConstraintId id = 0; id < problem.num_constraints(); ++id) {
-    if (const auto* c = dynamic_cast<const ShotPropertyConstraint*>(&problem.constraint(id))) {
-      return &c->owner();
-    }
-  }
-  return nullptr;
-}
-
 // The first two screen_position properties of different targets.
 std::optional<Subjects> subjects_of(const CompositionProblem& owner) {
   const Shot& shot = owner.shot();
@@ -86,11 +77,6 @@ Oriented orient(const Eigen::Vector3d& p, const Subjects& s, const Eigen::Vector
   return o;
 }
 
-double signed_degrees(double a) {
-  a = std::fmod(a + 180.0, 360.0);
-  return (a < 0 ? a + 360.0 : a) - 180.0;
-}
-
 }  // namespace
 
 const solvers::OptionSchema<ToricFraming::Options>& ToricFraming::Options::schema() {
@@ -106,7 +92,7 @@ const solvers::OptionSchema<ToricFraming::Options>& ToricFraming::Options::schem
 std::string ToricFraming::Options::validate() const { return ""; }
 
 std::string ToricFraming::unsuitable_reason(const csp::Problem& problem) const {
-  const CompositionProblem* owner = owner_of(problem);
+  const CompositionProblem* owner = composition_of(problem);
   if (!owner) return "needs a composition problem (a scene's shot: block)";
   if (!subjects_of(*owner)) {
     return "needs screen_position properties of two different targets at different points";
@@ -119,7 +105,7 @@ void ToricFraming::solve_into(const csp::Problem& problem, std::span<const doubl
   if (std::string why = unsuitable_reason(problem); !why.empty()) {
     throw std::invalid_argument(name_ + ": " + why);
   }
-  const CompositionProblem& owner = *owner_of(problem);
+  const CompositionProblem& owner = *composition_of(problem);
   const Subjects s = *subjects_of(owner);
   const Shot& shot = owner.shot();
   solvers::Budget budget(context.limits, 16);
