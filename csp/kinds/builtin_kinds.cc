@@ -6,6 +6,7 @@
 #include "sightline/csp/kinds/linear.h"
 #include "sightline/csp/kinds/not_equal.h"
 #include "sightline/csp/kinds/table.h"
+#include "sightline/csp/kinds/value_set.h"
 
 namespace sightline::csp {
 
@@ -16,6 +17,9 @@ void register_builtin_kinds(ConstraintKinds& kinds) {
   kinds.add(abs_deviation_kind());
   kinds.add(expression_kind());
   kinds.add(table_kind());
+  kinds.add(in_kind());
+  kinds.add(not_in_kind());
+  kinds.add(equals_kind());
 }
 
 }  // namespace sightline::csp

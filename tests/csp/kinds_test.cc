@@ -75,6 +75,33 @@ TEST(NotEqual, RegistryRefusesAScopeOfThree) {
   EXPECT_EQ(p->constraint(id).violation(v), 1.0);
 }
 
+// ---- in, not_in, equals (unary) -------------------------------------------------------------
+
+TEST(ValueSetConstraint, UnaryKindsAgainstMembershipAndTheirDeltas) {
+  ProblemBuilder b;
+  b.integer("x", 0, 5);
+  b.integer("y", 0, 5);
+  const ConstraintId in = b.constrain("in", {"x"}, spec_from({{"values", std::vector<double>{1, 4, 2}}}), 3);
+  const ConstraintId out = b.constrain("not_in", {"y"}, spec_from({{"values", std::vector<double>{0}}}));
+  const ConstraintId eq = b.constrain("equals", {"y"}, spec_from({{"value", 3}}), 1, true);
+  EXPECT_THROW(b.constrain("in", {"x", "y"}, spec_from({{"values", std::vector<double>{1}}})),
+               std::invalid_argument);
+  EXPECT_THROW(b.constrain("in", {"x"}, spec_from({{"values", std::vector<double>{}}})),
+               std::invalid_argument);
+  EXPECT_THROW(b.constrain("equals", {"x"}), std::invalid_argument);  // no value
+  const auto p = b.build();
+  for (double x = 0; x <= 5; ++x) {
+    for (double y = 0; y <= 5; ++y) {
+      const double v[] = {x, y};
+      EXPECT_EQ(p->constraint(in).violation(v), (x == 1 || x == 2 || x == 4) ? 0.0 : 1.0);
+      EXPECT_EQ(p->constraint(out).violation(v), y == 0 ? 1.0 : 0.0);
+      EXPECT_EQ(p->constraint(eq).violation(v), y == 3 ? 0.0 : 1.0);
+    }
+  }
+  EXPECT_EQ(p->constraint(in).kind(), "in");
+  check_incremental_matches_full(*p, 5, 300);
+}
+
 // ---- linear ---------------------------------------------------------------------------------
 
 TEST(LinearConstraint, ViolationIsTheAmountTheRelationIsBrokenBy) {
