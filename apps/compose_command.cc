@@ -32,6 +32,7 @@ struct ComposeOptions {
   double budget_ms = 20;
   std::uint64_t seed = 1;
   std::string pose;
+  std::string format = "text";
 };
 
 // FORMATS.md: the default time is the earliest keyframe of any actor (or of the character).
@@ -87,6 +88,10 @@ void run_compose(const ComposeOptions& o) {
   const camera::ShotEvaluation e = composition.evaluate(pose);
   const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
+  camera::PoseFileExtras extras{t, o.solver, result.wall_seconds};
+  if (o.format == "json") {
+    std::cout << camera::pose_json(pose, composition, e, extras);
+  } else {
   std::cout << "Shot of " << scene.name() << " at t = " << fixed(t, 3) << " s, " << o.solver
             << " (" << fixed(o.budget_ms, 1) << " ms budget): satisfaction " << fixed(e.satisfaction, 4)
             << ", " << (e.feasible ? "feasible" : "infeasible: " + e.why_infeasible) << ".\n";
@@ -104,12 +109,12 @@ void run_compose(const ComposeOptions& o) {
   std::cout << "  solve " << fixed(result.wall_seconds * 1000, 2) << " ms, "
             << result.evaluations << " evaluations; whole command " << fixed(whole * 1000, 1)
             << " ms\n";
+  }
   if (!o.pose.empty()) {
-    camera::PoseFileExtras extras{t, o.solver, result.wall_seconds};
     std::ofstream out(o.pose);
     out << camera::pose_json(pose, composition, e, extras);
     if (!out) throw std::runtime_error("cannot write the pose file " + o.pose);
-    std::cout << "Pose written to " << o.pose << "\n";
+    if (o.format != "json") std::cout << "Pose written to " << o.pose << "\n";
   }
   if (!e.feasible) throw RunFailed("no feasible pose found: " + e.why_infeasible);
 }
@@ -130,6 +135,9 @@ void add_compose_command(CLI::App& app) {
   cmd->add_option("--budget-ms", options->budget_ms, "time budget of the solve (default 20 ms)");
   cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
   cmd->add_option("--pose", options->pose, "write the pose file (JSON) here");
+  cmd->add_option("--format", options->format,
+                  "text (the default) or json (the pose file's object on standard output)")
+      ->check(CLI::IsMember({"text", "json"}));
   cmd->callback([options] { run_compose(*options); });
 }
 

@@ -3,11 +3,13 @@
 // (FORMATS.md): runs one scene with one solver through the chase camera, prints a
 // one-paragraph summary and writes the trace.
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "apps/commands.h"
+#include "apps/json_text.h"
 #include "sightline/csp/input_error.h"
 #include "sightline/domains/camera/composition/composition_solvers.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
@@ -31,7 +33,36 @@ struct FollowOptions {
   std::string trace;
   bool no_guard = false;
   int smoothing_stages = 1;
+  std::string format = "text";
 };
+
+// The run as one JSON object: scene, solver, profile, frames, every metric of results.csv
+// by name, the people a shot keeps and its satisfaction (tracking shots), the trace path.
+std::string run_json(const camera::Scene& scene, const experiments::CameraRun& run,
+                     const std::string& trace) {
+  std::ostringstream out;
+  out << "{\"scene\": " << json_string(scene.name()) << ", \"solver\": " << json_string(run.solver)
+      << ", \"profile\": " << json_string(run.profile) << ", \"frames\": " << run.trace.size()
+      << ", \"metrics\": {";
+  const std::vector<std::string> names = experiments::metric_names();
+  const std::vector<double> values = experiments::metric_values(run.metrics);
+  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) {
+    out << (i ? ", " : "") << json_string(names[i]) << ": " << json_number(values[i]);
+  }
+  out << "}";
+  if (run.shot) {
+    out << ", \"shot\": {\"satisfaction_mean\": " << json_number(run.shot->satisfaction_mean)
+        << ", \"satisfaction_p10\": " << json_number(run.shot->satisfaction_p10)
+        << ", \"feasible_percent\": " << json_number(run.shot->feasible_percent) << ", \"shown_percent\": {";
+    for (std::size_t i = 0; i < run.shot->people.size(); ++i) {
+      out << (i ? ", " : "") << json_string(run.shot->people[i].name) << ": "
+          << json_number(run.shot->people[i].shown_percent);
+    }
+    out << "}}";
+  }
+  out << ", \"trace\": " << (trace.empty() ? "null" : json_string(trace)) << "}";
+  return out.str();
+}
 
 void run_follow(const FollowOptions& o) {
   camera::Scene scene = camera::read_scene_file(o.scene);
@@ -50,6 +81,10 @@ void run_follow(const FollowOptions& o) {
   for (const std::string& s : o.settings) options.solver_options.insert(solvers::split_option(s));
   const experiments::CameraRun run = experiments::run_camera(scene, profile, options);
   if (!o.trace.empty()) experiments::write_trace_csv(o.trace, run.trace);
+  if (o.format == "json") {
+    std::cout << run_json(scene, run, o.trace) << "\n";
+    return;
+  }
   std::cout << experiments::summary_paragraph(scene, run) << "\n";
   if (!o.trace.empty()) std::cout << "Trace written to " << o.trace << "\n";
 }
@@ -76,6 +111,9 @@ void add_follow_command(CLI::App& app) {
   cmd->add_option("--smoothing-stages", options->smoothing_stages,
                   "low-pass stages on the solver's target, 1-4 (2: a third of the jerk, more lag)")
       ->check(CLI::Range(1, camera::ChaseCameraOptions::kMaxSmoothingStages));
+  cmd->add_option("--format", options->format,
+                  "text (the default: a paragraph) or json (one object: the metrics by name)")
+      ->check(CLI::IsMember({"text", "json"}));
   cmd->callback([options] { run_follow(*options); });
 }
 

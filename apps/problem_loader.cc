@@ -18,6 +18,16 @@ bool ends_with(std::string_view text, std::string_view suffix) {
 
 }  // namespace
 
+csp::LoadedProblem load_model(const std::string& path, const LoadOptions& options) {
+  if ((ends_with(path, ".yaml") || ends_with(path, ".yml")) && options.colours == 0) {
+    return csp::load_problem_file(path);
+  }
+  csp::LoadedProblem loaded;
+  loaded.problem = load_problem(path, options);
+  loaded.value_labels.resize(loaded.problem->num_variables());
+  return loaded;
+}
+
 std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options) {
   const bool graph = ends_with(path, ".col");
   if (!graph && options.colours > 0) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "sightline/csp/files/problem_file.h"
 #include "sightline/csp/problem.h"
 
 namespace sightline::apps {
@@ -19,5 +20,7 @@ struct LoadOptions {
 };
 
 std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options);
+// The same, with the value labels a problem file gives (empty for the other types).
+csp::LoadedProblem load_model(const std::string& path, const LoadOptions& options);
 
 }  // namespace sightline::apps

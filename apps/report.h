@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 
+#include "sightline/csp/files/problem_file.h"
 #include "sightline/csp/problem.h"
 #include "sightline/solvers/solver.h"
 
@@ -35,6 +36,15 @@ void print_result(std::ostream& out, const csp::Problem& problem,
 // Writes `values` in the format above to `path` ("-" = `out`). Throws std::runtime_error
 // when the file cannot be written, std::invalid_argument when a discrete value is not in its
 // domain (a solver bug, never a user's).
+// The same solve without printing (for --format json).
+solvers::SolverResult solve_quietly(const csp::Problem& problem, solvers::Solver& solver,
+                                    const solvers::SolveContext& context);
+// A result as one JSON object: problem, solver, feasible, cost, hard, stop, message, times,
+// evaluations, the assignment by variable name (a value's label where the file gives one)
+// and the violated constraints by name.
+std::string result_json(const csp::LoadedProblem& model, const std::string& solver,
+                        const solvers::SolverResult& result);
+
 void write_solution(const std::string& path, const csp::Problem& problem,
                     std::span<const double> values, std::ostream& out);
 

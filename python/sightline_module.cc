@@ -57,6 +57,7 @@ csp::Spec to_spec(const py::handle& value) {
 
 struct PyProblem {
   std::shared_ptr<csp::Problem> problem;
+  std::vector<std::vector<std::string>> labels;  // per variable, from a problem file
   std::vector<std::string> variables() const {
     std::vector<std::string> out;
     for (csp::VariableId v = 0; v < problem->num_variables(); ++v) out.push_back(problem->variable_name(v));
@@ -75,6 +76,7 @@ struct PyBuilder {
 
 struct PyResult {
   std::vector<std::string> names;
+  std::vector<std::vector<std::string>> labels;
   csp::Assignment values;
   double cost = 0, hard = 0;
   bool feasible = false;
@@ -82,9 +84,18 @@ struct PyResult {
   double wall_seconds = 0, best_found_seconds = -1;
   std::uint64_t evaluations = 0, iterations = 0, evaluations_at_best = 0;
   std::vector<std::pair<std::string, double>> breakdown;
+  // By variable name; a value's label where the problem file gives labels.
   py::dict assignment() const {
     py::dict d;
-    for (std::size_t i = 0; i < names.size(); ++i) d[py::str(names[i])] = values[i];
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const double v = values[i];
+      if (i < labels.size() && !labels[i].empty() && v >= 0 &&
+          v < static_cast<double>(labels[i].size()) && v == static_cast<double>(static_cast<std::size_t>(v))) {
+        d[py::str(names[i])] = labels[i][static_cast<std::size_t>(v)];
+      } else {
+        d[py::str(names[i])] = v;
+      }
+    }
     return d;
   }
 };
@@ -123,6 +134,7 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
   PyResult out;
   for (csp::VariableId v = 0; v < p.problem->num_variables(); ++v) out.names.push_back(p.problem->variable_name(v));
   out.values = r.best;
+  out.labels = p.labels;
   out.cost = r.score.soft;
   out.hard = r.score.hard;
   out.feasible = r.feasible();
@@ -304,7 +316,7 @@ PYBIND11_MODULE(_sightline, m) {
            py::arg("kind"), py::arg("scope"), py::arg("weight") = 1.0, py::arg("hard") = false,
            "A constraint of a registered kind over the named variables; its own fields as keywords.")
       .def("build", [](PyBuilder& b) {
-        PyProblem p{std::shared_ptr<csp::Problem>(b.get().build())};
+        PyProblem p{std::shared_ptr<csp::Problem>(b.get().build()), {}};
         b.builder.reset();
         return p;
       });
@@ -332,7 +344,9 @@ PYBIND11_MODULE(_sightline, m) {
   m.def("load_problem", [](const std::string& path, int colours) {
           apps::LoadOptions o;
           o.colours = colours;
-          return PyProblem{std::shared_ptr<csp::Problem>(apps::load_problem(path, o))};
+          csp::LoadedProblem model = apps::load_model(path, o);
+          return PyProblem{std::shared_ptr<csp::Problem>(std::move(model.problem)),
+                           std::move(model.value_labels)};
         },
         py::arg("path"), py::arg("colours") = 0,
         "A problem file (.yaml), a toulbar2 .wcsp or .cfn, or a DIMACS graph (.col, with colours).");

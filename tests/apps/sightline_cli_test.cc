@@ -350,3 +350,45 @@ TEST(SightlineCli, FollowWithoutASolverUsesTheRecommendedOne) {
 
 }  // namespace
 }  // namespace sightline::apps
+
+namespace {
+
+// --format json: one JSON object each, parsed by Python's json module here (the format a
+// researcher's tools read), with the assignment by variable name and labels.
+std::string json_field(const std::string& json, const std::string& expression) {
+  TempFile file("out.json", json);
+  const std::string command = "python3 -c \"import json,sys; d=json.load(open(sys.argv[1])); print(" +
+                              expression + ")\" " + file.path() + " 2>&1";
+  std::string output;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    EXPECT_EQ(::pclose(pipe), 0) << output << "\n" << json;
+  }
+  return output.substr(0, output.find_last_not_of('\n') + 1);
+}
+
+TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
+  const std::string problems = std::string(SIGHTLINE_SOURCE_DIR) + "/examples/problems/";
+  Outcome o = run("solve " + problems + "australia.yaml --solver bnb --format json");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(json_field(o.output, "d['stop']"), "proven optimal");
+  EXPECT_EQ(json_field(o.output, "d['feasible']"), "True");
+  // Labelled values come back as their labels.
+  const std::string wa = json_field(o.output, "d['assignment']['WA']");
+  EXPECT_TRUE(wa == "red" || wa == "green" || wa == "blue") << wa;
+
+  const std::string scene = std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/shots/walk-and-talk.yaml";
+  o = run("follow " + scene + " --format json");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(json_field(o.output, "d['scene']"), "walk-and-talk");
+  EXPECT_EQ(json_field(o.output, "sorted(d['shot']['shown_percent'])"), "['alice', 'bob']");
+  EXPECT_EQ(json_field(o.output, "'unflagged_jumps' in d['metrics']"), "True");
+
+  o = run("compose " + scene + " --format json");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(json_field(o.output, "len(d['position'])"), "3");
+  EXPECT_EQ(json_field(o.output, "d['feasible']"), "True");
+}
+
+}  // namespace

@@ -69,6 +69,13 @@ def test_every_solver_that_takes_a_python_problem_reaches_the_programs_optimum(t
     assert "not_equal(m2, m3)" in names  # constraints named by their variables' names
 
 
+def test_values_come_back_as_their_labels(source_dir):
+    problem = sl.load_problem(os.path.join(source_dir, "examples/problems/australia.yaml"))
+    r = sl.solve(problem, "bnb")
+    assert r.feasible
+    assert set(r.assignment.values()) <= {"red", "green", "blue"}
+
+
 def test_a_camera_trace_in_numpy_equals_the_programs_csv(tmp_path, binary, source_dir):
     scene = os.path.join(source_dir, "experiments/scenes/shots/walk-and-talk.yaml")
     csv_path = tmp_path / "walk.csv"
