@@ -29,7 +29,7 @@ struct TrackingOptions {
   // Budgets in evaluations of the shot, not seconds, so a run is the same on any machine
   // under any load (about 2 us each with four people among boxes).
   std::uint64_t frame_evaluations = 120;    // the per-frame local refinement
-  std::uint64_t resolve_evaluations = 800;  // a global solve
+  std::uint64_t resolve_evaluations = 250;  // a global solve
   double resolve_drop = 0.1;             // satisfaction lost before a global solve
   double max_speed = 8.0;                // m/s: longer moves are cuts
   double smoothing = 0.15;               // s: each of the two stages' time constant
