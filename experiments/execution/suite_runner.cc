@@ -138,7 +138,14 @@ void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
                                            std::to_string(result.evaluations),
                                            std::to_string(result.iterations),
                                            std::string(solvers::to_string(result.stop)),
-                                           broken >= 0 ? std::to_string(broken) : std::string()};
+                                           broken >= 0 ? std::to_string(broken) : std::string(),
+                                           // When the best was found, if the solver says.
+                                           result.best_found_seconds >= 0
+                                               ? number_text(result.best_found_seconds)
+                                               : std::string(),
+                                           result.best_found_seconds >= 0
+                                               ? std::to_string(result.evaluations_at_best)
+                                               : std::string()};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;

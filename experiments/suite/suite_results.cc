@@ -11,7 +11,7 @@ namespace {
 const std::vector<std::string>& toy_metric_names() {
   static const std::vector<std::string> names = {
       "cost", "hard_violations", "feasible", "time_s", "evaluations", "iterations", "stop",
-      "independent_broken"};
+      "independent_broken", "time_to_best_s", "evaluations_to_best"};
   return names;
 }
 
@@ -63,7 +63,7 @@ bool is_provenance_column(const std::string& column) {
 
 bool is_timing_column(const std::string& column) {
   return column == "solve_us_p50" || column == "solve_us_p99" || column == "solve_us_max" ||
-         column == "time_s" || column == "run_wall_s" || column == "run_cpu_s" ||
+         column == "time_s" || column == "time_to_best_s" || column == "run_wall_s" || column == "run_cpu_s" ||
          column == "run_max_rss_mb";
 }
 

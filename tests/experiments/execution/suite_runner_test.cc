@@ -158,6 +158,28 @@ problems:
   EXPECT_EQ(result_columns(suite)[2], "problem");
 }
 
+TEST(SuiteRunner, ToyRunsRecordWhenTheBestWasFound) {
+  ScratchDir dir("runner-best");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: best
+problems:
+  instances: [{nqueens: [20]}]
+  solvers: [sls, bnb]
+)"));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  ASSERT_EQ(outcome.results.size(), 2u);
+  const std::vector<std::string> columns = metric_columns(suite);
+  auto value = [&](const RunResult& r, const std::string& name) {
+    return r.values[std::find(columns.begin(), columns.end(), name) - columns.begin()];
+  };
+  // sls notes its best; bnb records none, and the cell stays empty rather than guessed.
+  const RunResult& sls = outcome.results[0].solver == "sls" ? outcome.results[0] : outcome.results[1];
+  const RunResult& bnb = outcome.results[0].solver == "sls" ? outcome.results[1] : outcome.results[0];
+  ASSERT_FALSE(value(sls, "time_to_best_s").empty());
+  EXPECT_LE(std::stod(value(sls, "time_to_best_s")), std::stod(value(sls, "time_s")) + 1e-9);
+  EXPECT_LE(std::stoull(value(sls, "evaluations_to_best")), std::stoull(value(sls, "evaluations")));
+  EXPECT_TRUE(value(bnb, "time_to_best_s").empty());
+}
+
 // A toy suite repeated over seeds with two solvers: stats.csv beside results.csv holds each
 // (problem, solver)'s repetitions and each solver's PAR-2, and the summary shows both.
 TEST(SuiteRunner, WritesStatisticsOfRepetitionsOverSeeds) {
