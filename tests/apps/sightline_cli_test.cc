@@ -392,3 +392,26 @@ TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SightlineCli, ConvertsAModelOfAnyKindsToWcspThatReadsBackWithTheSameOptimum) {
+  const std::string problems = std::string(SIGHTLINE_SOURCE_DIR) + "/examples/problems/";
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("sightline_convert_" + std::to_string(::getpid()) + ".wcsp")).string();
+  Outcome o = run("convert " + problems + "seating.yaml --to wcsp --out " + out);
+  ASSERT_EQ(o.status, 0) << o.output;
+  const Outcome original = run("solve " + problems + "seating.yaml --solver bnb --format json");
+  const Outcome converted = run("solve " + out + " --solver bnb --format json");
+  ASSERT_EQ(converted.status, 0) << converted.output;
+  EXPECT_EQ(json_field(original.output, "d['cost']"), json_field(converted.output, "d['cost']"));
+  std::filesystem::remove(out);
+  o = run("convert " + problems + "seating.yaml --to cfn");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_TRUE(contains(o.output, "only wcsp")) << o.output;
+  o = run("convert " + problems + "shelf.yaml --to wcsp");  // continuous
+  EXPECT_EQ(o.status, 2);
+  EXPECT_TRUE(contains(o.output, "not discrete")) << o.output;
+}
+
+}  // namespace
