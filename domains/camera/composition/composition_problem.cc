@@ -136,6 +136,17 @@ const CompositionProblem* composition_of(const csp::Problem& problem) {
   return nullptr;
 }
 
+void fill_frame(const CompositionProblem& problem, const CameraPose& pose, bool feasible,
+                const Eigen::Vector3d& aimed_for, CameraFrame& frame) {
+  frame.position = pose.position;
+  frame.target = pose.look_at;
+  frame.solver_target = aimed_for;
+  frame.score = problem.problem().score(problem.assignment(pose));
+  frame.look_at_visible = feasible;
+  frame.fov = pose.fov;
+  frame.roll = pose.roll;
+}
+
 double signed_degrees(double a) {
   a = std::fmod(a + 180.0, 360.0);
   return (a < 0 ? a + 360.0 : a) - 180.0;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "sightline/csp/problem.h"
+#include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/composition/camera_pose.h"
 #include "sightline/domains/camera/composition/property_kinds.h"
 #include "sightline/domains/camera/composition/shot.h"
@@ -74,6 +75,11 @@ class CompositionProblem {
 // The composition problem a csp::Problem was built by (found through its property
 // constraints), or null: how the composition solvers recognise a shot.
 const CompositionProblem* composition_of(const csp::Problem& problem);
+
+// A composing camera's frame (camera_controller.h) at `pose`: position, look-at point, lens,
+// the problem's score of the pose, and `feasible` as the controller's own visibility flag.
+void fill_frame(const CompositionProblem& problem, const CameraPose& pose, bool feasible,
+                const Eigen::Vector3d& aimed_for, CameraFrame& frame);
 
 // Degrees into [-180, 180).
 double signed_degrees(double degrees);

@@ -94,13 +94,7 @@ const CameraFrame& GroupFraming::update(const CharacterState& character, double 
   pose.roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
   pose.aspect = shot.aspect;
   const ShotEvaluation e = problem_.evaluate(pose);
-  frame_.position = pose.position;
-  frame_.target = pose.look_at;
-  frame_.solver_target = wanted;
-  frame_.score = problem_.problem().score(problem_.assignment(pose));
-  frame_.look_at_visible = e.feasible;
-  frame_.fov = pose.fov;
-  frame_.roll = pose.roll;
+  fill_frame(problem_, pose, e.feasible, wanted, frame_);
   frame_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return frame_;
 }

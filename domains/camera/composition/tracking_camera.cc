@@ -132,13 +132,7 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     }
   }
   evaluation_ = problem_.evaluate(pose_);
-  frame_.position = pose_.position;
-  frame_.target = pose_.look_at;
-  frame_.solver_target = problem_.pose(aim_).position;
-  frame_.score = problem_.problem().score(problem_.assignment(pose_));
-  frame_.look_at_visible = evaluation_.feasible;
-  frame_.fov = pose_.fov;
-  frame_.roll = pose_.roll;
+  fill_frame(problem_, pose_, evaluation_.feasible, problem_.pose(aim_).position, frame_);
   frame_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return frame_;
 }
