@@ -102,7 +102,7 @@ void add_follow_command(CLI::App& app) {
                   "camera solver; shot-search for a scene with a shot: block)");
   cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
   cmd->add_option("--profile", options->profile,
-                  "camera profile: a preset name (thesis-default, close-follow, high-follow, anticipating, anticipating-path) or "
+                  "camera profile: a preset name (default = anticipating, thesis = thesis-default, close-follow, high-follow, anticipating-path) or "
                   "a profile file; default: the scene's");
   cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
   cmd->add_option("--trace", options->trace, "write the per-frame trace (CSV) here");

@@ -48,7 +48,7 @@ AreaAdaptation read_adaptation(const Spec& block, const std::string& kind) {
 }
 
 CameraProfile load_preset(const std::string& name, const csp::SourceLocation& where, int depth) {
-  const std::string canonical = name == "default" ? "thesis-default" : name;
+  const std::string canonical = canonical_preset(name);
   for (const auto& preset : detail::preset_texts()) {
     if (canonical == preset.name) {
       return parse_onto(csp::parse_yaml(preset.yaml, std::string("preset ") + preset.name),
@@ -206,8 +206,14 @@ std::vector<std::string> preset_names() {
   return names;
 }
 
+std::string canonical_preset(const std::string& name) {
+  if (name == "default") return kDefaultPreset;
+  if (name == "thesis") return "thesis-default";
+  return name;
+}
+
 bool is_preset(const std::string& name) {
-  if (name == "default") return true;
+  if (name == "default" || name == "thesis") return true;
   for (const auto& preset : detail::preset_texts()) {
     if (name == preset.name) return true;
   }
@@ -226,7 +232,7 @@ CameraProfile resolve_profile(const csp::Spec& value, const std::string& base_di
   }
   const std::string& text = value.as_string("a profile: a preset name, a .yaml file or a mapping");
   if (is_preset(text)) {
-    source = "preset " + std::string(text == "default" ? "thesis-default" : text);
+    source = "preset " + canonical_preset(text);
     return preset_profile(text, value.where());
   }
   const std::filesystem::path path(text);

@@ -40,8 +40,15 @@ CameraProfile read_profile_file(const std::string& path);
 // Names of the shipped presets (thesis-default, close-follow, high-follow, ...), sorted.
 std::vector<std::string> preset_names();
 bool is_preset(const std::string& name);
-// A preset by name ("default" is another name for thesis-default). Throws InputError at
-// `where` for an unknown name, listing the presets.
+// The project's default camera, its best: what a scene without `camera.profile`, `follow`
+// without --profile and the preset name "default" get. The thesis' reactive camera stays
+// as the preset `thesis-default` (also named `thesis`) so the reproduction keeps its figures.
+inline constexpr const char* kDefaultPreset = "anticipating";
+// A preset's own name for a name a user may write ("default", "thesis").
+std::string canonical_preset(const std::string& name);
+
+// A preset by name ("default" is kDefaultPreset, "thesis" is thesis-default). Throws
+// InputError at `where` for an unknown name, listing the presets.
 CameraProfile preset_profile(const std::string& name, const csp::SourceLocation& where = {});
 
 // What a scene's `camera.profile` or the command line's --profile may say: a preset name, a

@@ -416,6 +416,8 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
   if (const Spec* d = spec.find("description")) scene.set_description(d->as_string("a description"));
   read_direction(spec, scene);
 
+  // Without camera.profile the scene gets the project's default camera, its best.
+  scene.set_profile(preset_profile(kDefaultPreset), std::string("preset ") + kDefaultPreset);
   const Spec* camera = spec.find("camera");
   if (camera != nullptr && !camera->is_null()) {
     if (!camera->is_map()) camera->fail("expected camera settings {start: [x, y, z], profile: ...}");

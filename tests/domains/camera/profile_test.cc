@@ -47,7 +47,9 @@ TEST(CameraProfile, ThesisDefaultPresetIsTheBuiltInDefault) {
   EXPECT_EQ(file.search_half_size, code.search_half_size);
   EXPECT_EQ(file.enclosed, code.enclosed);
   EXPECT_EQ(file.semi_enclosed, code.semi_enclosed);
-  EXPECT_EQ(preset_profile("default").name, "thesis-default");
+  // "default" is the project's best camera; the thesis' camera is also called "thesis".
+  EXPECT_EQ(preset_profile("default").name, "anticipating");
+  EXPECT_EQ(preset_profile("thesis").name, "thesis-default");
 }
 
 TEST(CameraProfile, AProfileOverridesOnlyWhatItWrites) {

@@ -59,8 +59,9 @@ TEST(SceneFile, ReadsTheFormatsExample) {
   EXPECT_EQ(s.character().size, Eigen::Vector3d(0.6, 1.8, 0.6));
   ASSERT_TRUE(s.camera_start());
   EXPECT_EQ(*s.camera_start(), Eigen::Vector3d(0, 2.5, -7));
-  EXPECT_EQ(s.profile().name, "thesis-default");
-  EXPECT_EQ(s.profile_source(), "preset thesis-default");
+  // FORMATS.md's example says `profile: default`: the project's best camera.
+  EXPECT_EQ(s.profile().name, "anticipating");
+  EXPECT_EQ(s.profile_source(), "preset anticipating");
 }
 
 TEST(SceneFile, DefaultsApplyWhenOptionalBlocksAreAbsent) {
@@ -70,7 +71,10 @@ TEST(SceneFile, DefaultsApplyWhenOptionalBlocksAreAbsent) {
   EXPECT_EQ(s.frame_count(), 1u);
   EXPECT_DOUBLE_EQ(s.character().look_at_height, 1.5);
   EXPECT_FALSE(s.camera_start());
-  // The ideal spot of thesis-default: 4 m behind (facing +x, so at x = -4), 2.5 m up.
+  // Without camera.profile: the default camera (anticipating), whose ideal spot is 4 m
+  // behind (facing +x, so at x = -4), 2.5 m up.
+  EXPECT_EQ(s.profile().name, "anticipating");
+  EXPECT_EQ(s.profile_source(), "preset anticipating");
   EXPECT_NEAR((s.start_camera_position() - Eigen::Vector3d(-4, 2.5, 0)).norm(), 0, 1e-12);
 }
 
