@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
+#include "apps/json_text.h"
 #include "apps/problem_loader.h"
 #include "apps/solve_options.h"
 #include "apps/text_table.h"
@@ -96,6 +97,7 @@ void add_compare_command(CLI::App& app) {
     LoadOptions load;
     std::uint64_t seed = 1;
     double time_limit_seconds = 3;
+    std::string format = "text";
   };
   auto args = std::make_shared<Args>();
   CLI::App* command = app.add_subcommand(
@@ -121,7 +123,11 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--time-limit", args->time_limit_seconds, "wall-clock limit per run, seconds")
       ->capture_default_str();
+  command->add_option("--format", args->format,
+                      "text (the default: a table) or json (one object per run, in a list)")
+      ->check(CLI::IsMember({"text", "json"}));
   command->callback([args] {
+    const bool json = args->format == "json";
     SolveOptions limits;  // reuses the shared validation of the seed and limits
     limits.seed = args->seed;
     limits.time_limit_seconds = args->time_limit_seconds;
@@ -140,9 +146,13 @@ void add_compare_command(CLI::App& app) {
     for (const auto& path : args->problems) {
       instances.push_back(file_instance(path, args->load, "?"));
     }
-    std::cout << "sightline compare: " << names.size() << " solvers x " << instances.size()
-              << " problems, seed " << args->seed << ", time limit "
-              << format_seconds(args->time_limit_seconds) << " per run\n\n";
+    if (!json) {
+      std::cout << "sightline compare: " << names.size() << " solvers x " << instances.size()
+                << " problems, seed " << args->seed << ", time limit "
+                << format_seconds(args->time_limit_seconds) << " per run\n\n";
+    }
+    // --format json: every run as an object (skipped runs say why), in one list.
+    std::vector<std::string> runs_json;
     TextTable table;
     using A = TextTable::Align;
     table.column("problem")
@@ -164,6 +174,9 @@ void add_compare_command(CLI::App& app) {
         if (const std::string why = solver->unsuitable_reason(*instance.problem); !why.empty()) {
           table.add_row(
               {instance.label, instance.optimum, name, "-", "-", "-", "-", "skipped", "-"});
+          runs_json.push_back("{\"problem\": " + json_string(instance.label) +
+                              ", \"solver\": " + json_string(name) +
+                              ", \"status\": \"skipped\", \"why\": " + json_string(why) + "}");
           const std::pair<std::string, std::string> key{name, why};
           const auto it = std::find(skip_reasons.begin(), skip_reasons.end(), key);
           if (it == skip_reasons.end()) {
@@ -190,13 +203,30 @@ void add_compare_command(CLI::App& app) {
         table.add_row({instance.label, instance.optimum, name, format_number(r.cost()),
                        r.feasible() ? "yes" : "no", std::to_string(r.evaluations),
                        format_seconds(r.wall_seconds), solvers::to_string(r.stop), check});
+        runs_json.push_back(
+            "{\"problem\": " + json_string(instance.label) + ", \"known_optimum\": " +
+            json_string(instance.optimum) + ", \"solver\": " + json_string(name) +
+            ", \"status\": \"ok\", \"cost\": " + json_number(r.cost()) + ", \"feasible\": " +
+            (r.feasible() ? "true" : "false") + ", \"evaluations\": " +
+            std::to_string(r.evaluations) + ", \"wall_seconds\": " + json_number(r.wall_seconds) +
+            ", \"best_found_seconds\": " + json_number(r.best_found_seconds) + ", \"stop\": " +
+            json_string(solvers::to_string(r.stop)) + ", \"independent_check\": " +
+            json_string(check) + "}");
       }
     }
-    table.print(std::cout);
-    if (!skip_reasons.empty()) std::cout << "\nskipped (solver on problems: why):\n";
-    for (std::size_t i = 0; i < skip_reasons.size(); ++i) {
-      std::cout << "- " << skip_reasons[i].first << " on " << skipped_on[i] << ": "
-                << skip_reasons[i].second << '\n';
+    if (json) {
+      std::cout << "[";
+      for (std::size_t i = 0; i < runs_json.size(); ++i) {
+        std::cout << (i ? ",\n " : "") << runs_json[i];
+      }
+      std::cout << "]\n";
+    } else {
+      table.print(std::cout);
+      if (!skip_reasons.empty()) std::cout << "\nskipped (solver on problems: why):\n";
+      for (std::size_t i = 0; i < skip_reasons.size(); ++i) {
+        std::cout << "- " << skip_reasons[i].first << " on " << skipped_on[i] << ": "
+                  << skip_reasons[i].second << '\n';
+      }
     }
     if (failures > 0) {
       throw RunFailed(std::to_string(failures) +

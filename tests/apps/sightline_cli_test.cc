@@ -389,6 +389,12 @@ TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_EQ(json_field(o.output, "len(d['position'])"), "3");
   EXPECT_EQ(json_field(o.output, "d['feasible']"), "True");
+
+  o = run("compare --solvers sls,grid --time-limit 0.05 --format json");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(json_field(o.output, "sorted({r['solver'] for r in d})"), "['grid', 'sls']");
+  EXPECT_EQ(json_field(o.output, "all(r['status'] in ('ok', 'skipped') for r in d)"), "True");
+  EXPECT_EQ(json_field(o.output, "any('why' in r for r in d)"), "True");  // grid skips some
 }
 
 }  // namespace
