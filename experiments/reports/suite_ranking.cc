@@ -77,7 +77,7 @@ RankingTable make_table(const Suite& suite, const SuiteOutcome& outcome, const s
     if (seen.insert(subject).second) t.subjects.push_back(subject);
     double loss = kInfinity;
     if (t.metric == "par2_s") {
-      const TimedRun timed = problem_timed_run(columns, r);
+      const TimedRun timed = problem_timed_run(suite, outcome, columns, r);
       loss = timed.solved && timed.seconds <= limit ? timed.seconds : 2.0 * limit;
     } else if (r.status == "ok") {
       const double v = metric_value(columns, r, t.metric);

@@ -40,8 +40,34 @@ double problem_time_limit(const Suite& suite, const SuiteOutcome& outcome) {
   return std::max(slowest, 1e-6);  // all-zero times: any positive limit
 }
 
-TimedRun problem_timed_run(const std::vector<std::string>& columns, const RunResult& run) {
+std::optional<double> problem_reference(const Suite& suite, const SuiteOutcome& outcome,
+                                        const std::string& problem_label) {
+  if (const auto it = suite.references.find(problem_label); it != suite.references.end()) {
+    return it->second;
+  }
+  if (suite.reference_from.empty()) return std::nullopt;
+  const std::vector<std::string> columns = metric_columns(suite);
+  for (const RunResult& r : outcome.results) {
+    if (r.kind == "toy" && r.solver == suite.reference_from && r.subject == problem_label &&
+        r.status == "ok" && metric_text(columns, r, "stop") == "proven optimal" &&
+        metric_value(columns, r, "feasible") == 1.0) {
+      return metric_value(columns, r, "cost");
+    }
+  }
+  return std::nullopt;
+}
+
+TimedRun problem_timed_run(const Suite& suite, const SuiteOutcome& outcome,
+                           const std::vector<std::string>& columns, const RunResult& run) {
   const double seconds = metric_value(columns, run, "time_s");
+  if (const std::optional<double> reference = problem_reference(suite, outcome, run.subject)) {
+    const double cost = metric_value(columns, run, "cost");
+    const double to_best = metric_value(columns, run, "time_to_best_s");
+    const bool solved = run.status == "ok" && metric_value(columns, run, "feasible") == 1.0 &&
+                        cost <= *reference + suite.reference_tolerance;
+    const double at = !std::isnan(to_best) ? to_best : (std::isnan(seconds) ? 0.0 : seconds);
+    return {solved, at};
+  }
   const std::string stop = metric_text(columns, run, "stop");
   const bool solved =
       run.status == "ok" && metric_value(columns, run, "feasible") == 1.0 &&
@@ -68,7 +94,7 @@ TimeProfiles problem_time_profiles(const Suite& suite, const SuiteOutcome& outco
       p.instances.size(), std::vector<std::vector<double>>(p.solvers.size()));
   for (const RunResult* r : runs) {
     const std::size_t s = index_of(p.solvers, r->solver);
-    const TimedRun timed = problem_timed_run(columns, *r);
+    const TimedRun timed = problem_timed_run(suite, outcome, columns, *r);
     p.runs[s].push_back(timed);
     const bool in_time = timed.solved && timed.seconds <= p.time_limit;
     seconds[index_of(p.instances, r->subject)][s].push_back(in_time ? timed.seconds : infinite);

@@ -17,6 +17,7 @@
 // seed), which is what "runs solved within t" means.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,18 @@ namespace sightline::experiments {
 // The problem runs' time limit as defined above (> 0; 1e-6 when every time is 0).
 double problem_time_limit(const Suite& suite, const SuiteOutcome& outcome);
 
-// A problem run as a TimedRun: solved as defined above, apart from the time limit (which the
-// scores apply); seconds = time_s (0 when the run has none).
-TimedRun problem_timed_run(const std::vector<std::string>& columns, const RunResult& run);
+// A problem's reference value (`problems: references:`): the value given for its label, else
+// the proven optimum of the reference solver's runs on it; nullopt without either.
+std::optional<double> problem_reference(const Suite& suite, const SuiteOutcome& outcome,
+                                        const std::string& problem_label);
+
+// A problem run as a TimedRun, apart from the time limit (which the scores apply). With a
+// reference for its problem: solved when it is feasible with a cost within the suite's
+// tolerance of the reference, at its time to best (time_s when the solver records none), so
+// anytime solvers on optimisation problems count; without one: solved as defined above
+// (feasible and the solver's own stop says so), seconds = time_s (0 when none).
+TimedRun problem_timed_run(const Suite& suite, const SuiteOutcome& outcome,
+                           const std::vector<std::string>& columns, const RunResult& run);
 
 struct TimeProfiles {
   std::vector<std::string> solvers;    // problem solver labels with at least one run, suite order

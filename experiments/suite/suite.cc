@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -232,9 +233,81 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
   suite.camera_seeds = read_seeds(camera_spec.find("seeds"));
 }
 
+// problems: references: {values: {LABEL: v, ...}, file: refs.csv, from: SOLVER, tolerance: t}
+// A reference names a problem of the suite by its label (the file's lines "label,value",
+// '#' comments and blank lines allowed); `from` a solver label of the suite.
+void read_references(const Spec& spec, const std::string& base_dir, Suite& suite) {
+  if (!spec.is_map()) {
+    spec.fail("expected references: {values: {problem: value}, file: refs.csv, from: solver, "
+              "tolerance: t}");
+  }
+  spec.check_keys({"values", "file", "from", "tolerance"});
+  auto known = [&](const std::string& label) {
+    for (const SuiteProblem& p : suite.problems) {
+      if (p.label == label) return true;
+    }
+    return false;
+  };
+  auto known_labels = [&] {
+    std::string out;
+    for (const SuiteProblem& p : suite.problems) out += (out.empty() ? "" : ", ") + p.label;
+    return out;
+  };
+  if (const Spec* values = spec.find("values")) {
+    if (!values->is_map()) values->fail("expected values: {problem label: reference value, ...}");
+    for (const auto& [label, value] : values->fields()) {
+      if (!known(label)) {
+        value.fail("no problem of the suite is labelled '" + label + "' (its problems: " +
+                   known_labels() + ")");
+      }
+      suite.references[label] = value.as_number("a reference value (a cost)");
+    }
+  }
+  if (const Spec* file = spec.find("file")) {
+    const std::string path =
+        (std::filesystem::path(base_dir) / file->as_string("a file of references")).string();
+    std::ifstream in(path);
+    if (!in) file->fail("cannot read the references file " + path);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (line.empty() || line[0] == '#') continue;
+      const std::size_t comma = line.rfind(',');
+      const csp::SourceLocation where{path, number, 1};
+      if (comma == std::string::npos) {
+        throw csp::InputError(where, "expected 'problem label,reference value', got '" + line + "'");
+      }
+      const std::string label = line.substr(0, comma);
+      if (!known(label)) {
+        throw csp::InputError(where, "no problem of the suite is labelled '" + label +
+                                         "' (its problems: " + known_labels() + ")");
+      }
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(line.substr(comma + 1), &used);
+        if (used != line.size() - comma - 1 || !std::isfinite(v)) throw std::invalid_argument("");
+        suite.references[label] = v;
+      } catch (const std::exception&) {
+        throw csp::InputError(where, "expected a finite reference value after the comma, got '" +
+                                         line.substr(comma + 1) + "'");
+      }
+    }
+  }
+  if (const Spec* from = spec.find("from")) {
+    suite.reference_from = from->as_string("a solver label of the suite");
+    bool found = false;
+    for (const SuiteToySolver& s : suite.toy_solvers) found = found || s.label == suite.reference_from;
+    if (!found) from->fail("no solver of the suite is labelled '" + suite.reference_from + "'");
+  }
+  if (const Spec* t = spec.find("tolerance")) {
+    suite.reference_tolerance = t->as_number("a tolerance >= 0 (absolute, in cost)");
+    if (suite.reference_tolerance < 0) t->fail("expected a tolerance >= 0");
+  }
+}
+
 void read_problems(const Spec& spec, const std::string& base_dir,
                    const std::optional<SuiteLoadOnly>& only, Suite& suite) {
-  spec.check_keys({"instances", "solvers", "seeds", "limits"});
+  spec.check_keys({"instances", "solvers", "seeds", "limits", "references"});
   std::set<std::string> labels;
   const Spec& instances = spec.at("instances");
   for (const Spec& entry : instances.items("a list of instances")) {
@@ -337,6 +410,10 @@ void read_problems(const Spec& spec, const std::string& base_dir,
   }
   if (suite.toy_solvers.empty()) solver_list.fail("expected at least one solver");
   suite.toy_seeds = read_seeds(spec.find("seeds"));
+  // A run's child process loads only its own problem; references only matter to reports.
+  if (const Spec* references = spec.find("references"); references && !only) {
+    read_references(*references, base_dir, suite);
+  }
   if (const Spec* limits = spec.find("limits")) {
     limits->check_keys({"time_seconds", "max_evaluations", "max_iterations"});
     const double time = limits->number_or("time_seconds", 0);

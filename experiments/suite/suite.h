@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -99,6 +100,13 @@ struct Suite {
   std::vector<SuiteToySolver> toy_solvers;
   std::vector<std::uint64_t> toy_seeds;
   solvers::SolveLimits toy_limits;
+  // Reference values of the problems (`problems: references:`), for judging optimisation
+  // runs: a run counts as solved when it reaches its problem's reference within
+  // `reference_tolerance`, at its time to best. By problem label; `reference_from` names a
+  // solver whose proven optima in the same suite serve where no value is given.
+  std::map<std::string, double> references;
+  std::string reference_from;
+  double reference_tolerance = 1e-9;
 
   // `report: replay_assets: beside`: the 3D replay's three.js and scene data go to
   // OUT/report-assets/ beside report.html instead of inside it (`inline`, the default).

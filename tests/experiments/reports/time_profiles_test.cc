@@ -93,15 +93,49 @@ TEST(TimeProfiles, ProfilesCsvHoldsTheFractionWithinEachTau) {
 TEST(TimeProfiles, InfeasibleFailedOrLimitStoppedRunsAreNotSolved) {
   const Suite suite = two_by_two();
   const std::vector<std::string> columns = metric_columns(suite);
-  EXPECT_TRUE(problem_timed_run(columns, run(suite, "p", "A", 1, "1", "completed")).solved);
-  EXPECT_TRUE(problem_timed_run(columns, run(suite, "p", "A", 1, "1", "proven optimal")).solved);
-  EXPECT_FALSE(problem_timed_run(columns, run(suite, "p", "A", 1, "1", "time limit")).solved);
-  EXPECT_FALSE(problem_timed_run(columns, run(suite, "p", "A", 1, "1", "evaluation limit")).solved);
-  EXPECT_FALSE(problem_timed_run(columns, run(suite, "p", "A", 1, "1", "completed", "0")).solved);
+  EXPECT_TRUE(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "completed")).solved);
+  EXPECT_TRUE(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "proven optimal")).solved);
+  EXPECT_FALSE(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "time limit")).solved);
+  EXPECT_FALSE(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "evaluation limit")).solved);
+  EXPECT_FALSE(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "completed", "0")).solved);
   EXPECT_FALSE(
-      problem_timed_run(columns, run(suite, "p", "A", 1, "1", "completed", "1", "failed")).solved);
-  EXPECT_DOUBLE_EQ(problem_timed_run(columns, run(suite, "p", "A", 1, "2.5", "completed")).seconds,
+      problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "1", "completed", "1", "failed")).solved);
+  EXPECT_DOUBLE_EQ(problem_timed_run(suite, {}, columns, run(suite, "p", "A", 1, "2.5", "completed")).seconds,
                    2.5);
+}
+
+// With reference values, an optimisation run is solved when it reaches its problem's
+// reference within the tolerance, at its time to best, whatever stopped it: a time-limited
+// anytime run that found the optimum counts; one that did not, does not.
+TEST(TimeProfiles, RunsReachingTheReferenceAreSolvedAtTheirTimeToBest) {
+  Suite suite = two_by_two();
+  suite.references["p"] = 5;
+  suite.reference_tolerance = 0.5;
+  const std::vector<std::string> columns = metric_columns(suite);
+  auto with = [&](RunResult r, const std::string& cost, const std::string& to_best) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (columns[c] == "cost") r.values[c] = cost;
+      if (columns[c] == "time_to_best_s") r.values[c] = to_best;
+    }
+    return r;
+  };
+  const TimedRun reached =
+      problem_timed_run(suite, {}, columns, with(run(suite, "p", "A", 1, "10", "time limit"), "5.4", "2.5"));
+  EXPECT_TRUE(reached.solved);
+  EXPECT_DOUBLE_EQ(reached.seconds, 2.5);
+  EXPECT_FALSE(problem_timed_run(suite, {}, columns,
+                                 with(run(suite, "p", "A", 1, "10", "time limit"), "6", "1")).solved);
+  // Without a time to best, the run's time.
+  EXPECT_DOUBLE_EQ(problem_timed_run(suite, {}, columns,
+                                     with(run(suite, "p", "A", 1, "7", "completed"), "5", "")).seconds, 7);
+  // q has no value: the reference solver's proven optimum stands in.
+  suite.reference_from = "B";
+  SuiteOutcome outcome;
+  outcome.results = {with(run(suite, "q", "B", 1, "3", "proven optimal"), "2", "")};
+  EXPECT_EQ(problem_reference(suite, outcome, "q"), 2.0);
+  EXPECT_TRUE(problem_timed_run(suite, outcome, columns,
+                                with(run(suite, "q", "A", 1, "9", "time limit"), "2", "0.5")).solved);
+  EXPECT_FALSE(problem_reference(suite, {}, "q").has_value());
 }
 
 // Without a suite time limit the slowest problem run (100 s) is the limit, so A's 100 s run

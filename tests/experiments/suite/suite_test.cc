@@ -247,3 +247,42 @@ camera:
 
 }  // namespace
 }  // namespace sightline::experiments
+
+namespace sightline::experiments {
+namespace {
+
+TEST(SuiteFile, ReferencesNameTheSuitesProblemsAndSolvers) {
+  ScratchDir dir("suite-references");
+  dir.write("refs.csv", "# reference values\n8-queens,0\n\n6-queens,0\n");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: refs
+problems:
+  instances: [{nqueens: [6, 8]}]
+  solvers: [sls, bnb]
+  references: {values: {8-queens: 0}, file: refs.csv, from: bnb, tolerance: 0.5}
+)"));
+  EXPECT_EQ(suite.references.at("8-queens"), 0);
+  EXPECT_EQ(suite.references.at("6-queens"), 0);
+  EXPECT_EQ(suite.reference_from, "bnb");
+  EXPECT_EQ(suite.reference_tolerance, 0.5);
+
+  auto refused = [&](const std::string& references, const std::string& words, int line) {
+    try {
+      read_suite_file(dir.write("bad.yaml", "name: bad\nproblems:\n  instances: [{nqueens: [6]}]\n"
+                                            "  solvers: [sls]\n  references: " + references + "\n"));
+      ADD_FAILURE() << "accepted " << references;
+    } catch (const csp::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_EQ(e.where().line, line) << e.what();
+    }
+  };
+  refused("{values: {9-queens: 0}}", "9-queens", 5);
+  refused("{from: tabu}", "tabu", 5);
+  refused("{tolerance: -1}", "tolerance", 5);
+  dir.write("bad.csv", "6-queens,0\n7-queens,1\n");
+  refused("{file: bad.csv}", "7-queens", 2);  // the file's own line
+  dir.write("nan.csv", "6-queens,lots\n");
+  refused("{file: nan.csv}", "reference value", 1);
+}
+
+}  // namespace
+}  // namespace sightline::experiments
