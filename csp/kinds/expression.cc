@@ -2,6 +2,7 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -69,6 +70,14 @@ ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
                                     "digits and _, not starting with a digit");
       }
       c.parser.DefineVar(names[i], &c.buffer[i]);
+    }
+    // Positional names _1 .. _n for the scope's variables, so one formula can serve every
+    // scope of a `scopes:` list; a scope variable of that very name keeps it.
+    for (std::size_t i = 0; i < arity; ++i) {
+      const std::string positional = "_" + std::to_string(i + 1);
+      if (std::find(names.begin(), names.end(), positional) == names.end()) {
+        c.parser.DefineVar(positional, &c.buffer[i]);
+      }
     }
     for (std::size_t k = 0; k < num_parameters; ++k) {
       const std::string& name = parameters->name(k);

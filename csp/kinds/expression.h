@@ -6,6 +6,8 @@
 //     "x - 2"          x <= 2, violation the excess over 2
 //     "x + y != 3"     comparisons are 0/1, so this is a 0/1 constraint
 //     "abs(x - y)"     a deviation
+//     "abs(_1 - _2)"   _1 .. _n name the scope's variables by position, so one formula
+//                      serves every scope of a `scopes:` list
 //     "idiv(x, 3) == idiv(y, 3)"   integer functions: floor, ceil, mod (sign of the
 //                      divisor, as Python's %), idiv (floor of the quotient); min, max, abs
 // A formula that is undefined somewhere (sqrt of a negative, 0/0, 1/0) yields NaN or +inf; that

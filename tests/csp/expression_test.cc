@@ -48,6 +48,20 @@ TEST(ExpressionConstraint, IntegerFunctionsForDerivedValues) {
   EXPECT_GE(violation_at(*with_formula("mod(x, y)"), 4, 0), 1e9);
 }
 
+TEST(ExpressionConstraint, PositionalNamesServeEveryScopeOfAList) {
+  EXPECT_DOUBLE_EQ(violation_at(*with_formula("_1 - 2 * _2"), 7, 3), 1);
+  const auto p = parse_problem(R"(name: shared
+variables:
+  - {names: [a, b, c, d], int: [0, 9]}
+constraints:
+  - {kind: expression, scopes: [[a, b], [c, d]], formula: "abs(_1 - _2) > 2"}
+)", "shared.yaml");
+  ASSERT_EQ(p->num_constraints(), 2u);
+  const double v[] = {1, 5, 4, 5};
+  EXPECT_EQ(p->constraint(0).violation(v), 1);  // |1 - 5| > 2
+  EXPECT_EQ(p->constraint(1).violation(v), 0);  // |4 - 5| <= 2
+}
+
 TEST(ExpressionConstraint, ComparisonsMakeZeroOneConstraints) {
   const auto p = with_formula("x + y != 3");
   EXPECT_EQ(violation_at(*p, 1, 2), 0);
