@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
-#include "apps/json_text.h"
+#include "sightline/csp/json_text.h"
 #include "apps/problem_loader.h"
 #include "apps/solve_options.h"
 #include "apps/text_table.h"
@@ -174,9 +174,9 @@ void add_compare_command(CLI::App& app) {
         if (const std::string why = solver->unsuitable_reason(*instance.problem); !why.empty()) {
           table.add_row(
               {instance.label, instance.optimum, name, "-", "-", "-", "-", "skipped", "-"});
-          runs_json.push_back("{\"problem\": " + json_string(instance.label) +
-                              ", \"solver\": " + json_string(name) +
-                              ", \"status\": \"skipped\", \"why\": " + json_string(why) + "}");
+          runs_json.push_back("{\"problem\": " + csp::json_string(instance.label) +
+                              ", \"solver\": " + csp::json_string(name) +
+                              ", \"status\": \"skipped\", \"why\": " + csp::json_string(why) + "}");
           const std::pair<std::string, std::string> key{name, why};
           const auto it = std::find(skip_reasons.begin(), skip_reasons.end(), key);
           if (it == skip_reasons.end()) {
@@ -204,14 +204,14 @@ void add_compare_command(CLI::App& app) {
                        r.feasible() ? "yes" : "no", std::to_string(r.evaluations),
                        format_seconds(r.wall_seconds), solvers::to_string(r.stop), check});
         runs_json.push_back(
-            "{\"problem\": " + json_string(instance.label) + ", \"known_optimum\": " +
-            json_string(instance.optimum) + ", \"solver\": " + json_string(name) +
-            ", \"status\": \"ok\", \"cost\": " + json_number(r.cost()) + ", \"feasible\": " +
+            "{\"problem\": " + csp::json_string(instance.label) + ", \"known_optimum\": " +
+            csp::json_string(instance.optimum) + ", \"solver\": " + csp::json_string(name) +
+            ", \"status\": \"ok\", \"cost\": " + csp::json_number(r.cost()) + ", \"feasible\": " +
             (r.feasible() ? "true" : "false") + ", \"evaluations\": " +
-            std::to_string(r.evaluations) + ", \"wall_seconds\": " + json_number(r.wall_seconds) +
-            ", \"best_found_seconds\": " + json_number(r.best_found_seconds) + ", \"stop\": " +
-            json_string(solvers::to_string(r.stop)) + ", \"independent_check\": " +
-            json_string(check) + "}");
+            std::to_string(r.evaluations) + ", \"wall_seconds\": " + csp::json_number(r.wall_seconds) +
+            ", \"best_found_seconds\": " + csp::json_number(r.best_found_seconds) + ", \"stop\": " +
+            csp::json_string(solvers::to_string(r.stop)) + ", \"independent_check\": " +
+            csp::json_string(check) + "}");
       }
     }
     if (json) {

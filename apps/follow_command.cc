@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "apps/commands.h"
-#include "apps/json_text.h"
+#include "sightline/csp/json_text.h"
 #include "sightline/csp/input_error.h"
 #include "sightline/domains/camera/composition/composition_solvers.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
@@ -41,26 +41,26 @@ struct FollowOptions {
 std::string run_json(const camera::Scene& scene, const experiments::CameraRun& run,
                      const std::string& trace) {
   std::ostringstream out;
-  out << "{\"scene\": " << json_string(scene.name()) << ", \"solver\": " << json_string(run.solver)
-      << ", \"profile\": " << json_string(run.profile) << ", \"frames\": " << run.trace.size()
+  out << "{\"scene\": " << csp::json_string(scene.name()) << ", \"solver\": " << csp::json_string(run.solver)
+      << ", \"profile\": " << csp::json_string(run.profile) << ", \"frames\": " << run.trace.size()
       << ", \"metrics\": {";
   const std::vector<std::string> names = experiments::metric_names();
   const std::vector<double> values = experiments::metric_values(run.metrics);
   for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) {
-    out << (i ? ", " : "") << json_string(names[i]) << ": " << json_number(values[i]);
+    out << (i ? ", " : "") << csp::json_string(names[i]) << ": " << csp::json_number(values[i]);
   }
   out << "}";
   if (run.shot) {
-    out << ", \"shot\": {\"satisfaction_mean\": " << json_number(run.shot->satisfaction_mean)
-        << ", \"satisfaction_p10\": " << json_number(run.shot->satisfaction_p10)
-        << ", \"feasible_percent\": " << json_number(run.shot->feasible_percent) << ", \"shown_percent\": {";
+    out << ", \"shot\": {\"satisfaction_mean\": " << csp::json_number(run.shot->satisfaction_mean)
+        << ", \"satisfaction_p10\": " << csp::json_number(run.shot->satisfaction_p10)
+        << ", \"feasible_percent\": " << csp::json_number(run.shot->feasible_percent) << ", \"shown_percent\": {";
     for (std::size_t i = 0; i < run.shot->people.size(); ++i) {
-      out << (i ? ", " : "") << json_string(run.shot->people[i].name) << ": "
-          << json_number(run.shot->people[i].shown_percent);
+      out << (i ? ", " : "") << csp::json_string(run.shot->people[i].name) << ": "
+          << csp::json_number(run.shot->people[i].shown_percent);
     }
     out << "}}";
   }
-  out << ", \"trace\": " << (trace.empty() ? "null" : json_string(trace)) << "}";
+  out << ", \"trace\": " << (trace.empty() ? "null" : csp::json_string(trace)) << "}";
   return out.str();
 }
 

@@ -1,6 +1,6 @@
 #include "apps/report.h"
 
-#include "apps/json_text.h"
+#include "sightline/csp/json_text.h"
 
 #include <algorithm>
 #include <fstream>
@@ -58,35 +58,27 @@ std::string result_json(const csp::LoadedProblem& model, const std::string& solv
                         const solvers::SolverResult& r) {
   const csp::Problem& p = *model.problem;
   std::ostringstream out;
-  out << "{\"problem\": " << json_string(p.name()) << ", \"solver\": " << json_string(solver)
+  out << "{\"problem\": " << csp::json_string(p.name()) << ", \"solver\": " << csp::json_string(solver)
       << ", \"feasible\": " << (r.feasible() ? "true" : "false")
-      << ", \"cost\": " << json_number(r.score.soft) << ", \"hard\": " << json_number(r.score.hard)
-      << ", \"stop\": " << json_string(solvers::to_string(r.stop))
-      << ", \"message\": " << json_string(r.message)
-      << ", \"wall_seconds\": " << json_number(r.wall_seconds)
-      << ", \"best_found_seconds\": " << json_number(r.best_found_seconds)
+      << ", \"cost\": " << csp::json_number(r.score.soft) << ", \"hard\": " << csp::json_number(r.score.hard)
+      << ", \"stop\": " << csp::json_string(solvers::to_string(r.stop))
+      << ", \"message\": " << csp::json_string(r.message)
+      << ", \"wall_seconds\": " << csp::json_number(r.wall_seconds)
+      << ", \"best_found_seconds\": " << csp::json_number(r.best_found_seconds)
       << ", \"evaluations\": " << r.evaluations << ", \"evaluations_at_best\": " << r.evaluations_at_best
       << ", \"iterations\": " << r.iterations << ", \"assignment\": {";
   for (csp::VariableId v = 0; v < p.num_variables(); ++v) {
     const bool labelled = v < model.value_labels.size() && !model.value_labels[v].empty();
-    out << (v ? ", " : "") << json_string(p.variable_name(v)) << ": "
-        << (labelled ? json_string(model.value_name(v, r.best[v])) : json_number(r.best[v]));
+    out << (v ? ", " : "") << csp::json_string(p.variable_name(v)) << ": "
+        << (labelled ? csp::json_string(model.value_name(v, r.best[v])) : csp::json_number(r.best[v]));
   }
   out << "}, \"violated\": [";
   bool first = true;
   for (const csp::ConstraintCost& c : r.breakdown) {
     if (!(c.violation > 0)) continue;
-    const csp::Constraint& constraint = p.constraint(c.id);
-    std::string name = constraint.label();
-    if (name.empty()) {
-      name = std::string(constraint.kind()) + "(";
-      for (std::size_t i = 0; i < constraint.scope().size(); ++i) {
-        name += (i ? ", " : "") + p.variable_name(constraint.scope()[i]);
-      }
-      name += ")";
-    }
-    out << (first ? "" : ", ") << "{\"constraint\": " << json_string(name)
-        << ", \"hard\": " << (c.hard ? "true" : "false") << ", \"cost\": " << json_number(c.cost) << "}";
+    const std::string name = p.constraint_name(c.id);
+    out << (first ? "" : ", ") << "{\"constraint\": " << csp::json_string(name)
+        << ", \"hard\": " << (c.hard ? "true" : "false") << ", \"cost\": " << csp::json_number(c.cost) << "}";
     first = false;
   }
   out << "]}";

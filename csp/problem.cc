@@ -117,6 +117,16 @@ const Problem::NameRun& Problem::run_of(VariableId id) const {
   return *(it - 1);
 }
 
+std::string Problem::constraint_name(ConstraintId id) const {
+  const Constraint& c = constraint(id);
+  if (!c.label().empty()) return c.label();
+  std::string name = std::string(c.kind()) + "(";
+  for (std::size_t i = 0; i < c.scope().size(); ++i) {
+    name += (i ? ", " : "") + variable_name(c.scope()[i]);
+  }
+  return name + ")";
+}
+
 std::string Problem::variable_name(VariableId id) const {
   const NameRun& run = run_of(id);
   if (run.generated) return generated_name(run.prefix, id - run.first);

@@ -81,6 +81,9 @@ class Problem {
   const Domain& domain(VariableId id) const { return domains_[domain_slot_[id]]; }
   // A variable's name (made from its batch's prefix for add_variables batches).
   std::string variable_name(VariableId id) const;
+  // How messages and tables name a constraint: its label, else its kind over its variables'
+  // names, "not_equal(WA, NT)".
+  std::string constraint_name(ConstraintId id) const;
   // Name and domain as one record. The records are made for every variable on the first
   // call of either (a copy of each name and domain: on a million-variable model that is as
   // much as building it), so code that runs on large models uses domain() and

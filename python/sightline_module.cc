@@ -148,15 +148,7 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
   out.evaluations_at_best = r.evaluations_at_best;
   for (const csp::ConstraintCost& c : r.breakdown) {
     // Named by its label, else by its kind over its variables' names: "not_equal(a, b)".
-    const csp::Constraint& constraint = p.problem->constraint(c.id);
-    std::string name = constraint.label();
-    if (name.empty()) {
-      name = std::string(constraint.kind()) + "(";
-      for (std::size_t i = 0; i < constraint.scope().size(); ++i) {
-        name += (i ? ", " : "") + p.problem->variable_name(constraint.scope()[i]);
-      }
-      name += ")";
-    }
+    const std::string name = p.problem->constraint_name(c.id);
     out.breakdown.emplace_back(name, c.cost);
   }
   return out;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
 namespace {
@@ -40,6 +41,14 @@ CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, dou
     }
     targets_.push_back(std::move(ids));
   }
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const ShotProperty& p = shot.properties[i];
+    if ((p.kind == "framed" || p.kind == "visible") && p.range.hi <= 0) continue;  // kept out
+    for (int t : targets_[i]) {
+      if (std::find(wanted_.begin(), wanted_.end(), t) == wanted_.end()) wanted_.push_back(t);
+    }
+  }
+  if (wanted_.empty()) wanted_.push_back(targets_[0][0]);
   for (std::size_t i = 0; i < shot.properties.size(); ++i) {
     const ShotPropertyKind* kind = ShotPropertyKinds::global().find(shot.properties[i].kind);
     if (!kind) {
@@ -147,10 +156,12 @@ void fill_frame(const CompositionProblem& problem, const CameraPose& pose, bool 
   frame.roll = pose.roll;
 }
 
-double signed_degrees(double a) {
-  a = std::fmod(a + 180.0, 360.0);
-  return (a < 0 ? a + 360.0 : a) - 180.0;
+double arc_middle(const ValueRange& range) {
+  const double hi = range.hi < range.lo ? range.hi + 360 : range.hi;
+  return (range.lo + hi) / 2;
 }
+
+double signed_degrees(double a) { return wrap_degrees(a + 180.0) - 180.0; }
 
 ShotPropertyConstraint::ShotPropertyConstraint(const CompositionProblem& owner, std::size_t index,
                                                const ShotPropertyKind& kind)

@@ -58,6 +58,10 @@ class CompositionProblem {
   void set_time(double t, double lead = 0) { world_->set_time(t, lead); }
   // Each property's targets, as indices into world().people().
   const std::vector<std::vector<int>>& targets() const { return targets_; }
+  // The people the shot wants in the image, in first-mention order: every target but those
+  // it only keeps out (a framed or visible property with range [0, 0], an exclusion); the
+  // first target when that leaves nobody.
+  const std::vector<int>& wanted() const { return wanted_; }
 
   CameraPose pose(std::span<const double> values) const;
   // The assignment of a pose (yaw and pitch of its view direction; clamped to the domains).
@@ -70,6 +74,7 @@ class CompositionProblem {
   std::unique_ptr<ShotWorld> world_;
   std::unique_ptr<csp::Problem> problem_;
   std::vector<std::vector<int>> targets_;
+  std::vector<int> wanted_;
 };
 
 // The composition problem a csp::Problem was built by (found through its property
@@ -80,6 +85,10 @@ const CompositionProblem* composition_of(const csp::Problem& problem);
 // the problem's score of the pose, and `feasible` as the controller's own visibility flag.
 void fill_frame(const CompositionProblem& problem, const CameraPose& pose, bool feasible,
                 const Eigen::Vector3d& aimed_for, CameraFrame& frame);
+
+// The middle of a wanted range of angles, as angle_horizontal reads it (hi < lo: the arc
+// from lo up through 180 to hi + 360).
+double arc_middle(const ValueRange& range);
 
 // Degrees into [-180, 180).
 double signed_degrees(double degrees);

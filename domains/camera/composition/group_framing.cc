@@ -21,23 +21,14 @@ const Shot& shot_of(const Scene& scene) {
 GroupFraming::GroupFraming(const Scene& scene, double max_speed)
     : scene_(&scene), max_speed_(max_speed), problem_(scene, shot_of(scene), scene.trajectory().start_time()) {
   const Shot& shot = *scene.shot();
-  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
-    const ShotProperty& p = shot.properties[i];
-    if ((p.kind == "framed" || p.kind == "visible") && p.range.hi <= 0) continue;
-    for (int t : problem_.targets()[i]) {
-      if (std::find(wanted_.begin(), wanted_.end(), t) == wanted_.end()) wanted_.push_back(t);
-    }
-  }
-  if (wanted_.empty()) wanted_.push_back(problem_.targets()[0][0]);
   // The offset an engine user would set: the first target's angle properties, or its front.
-  const int first = wanted_.front();
+  const int first = problem_.wanted().front();
   double bearing = 0, elevation = 15;
   for (std::size_t i = 0; i < shot.properties.size(); ++i) {
     const ShotProperty& p = shot.properties[i];
     if (problem_.targets()[i].size() != 1 || problem_.targets()[i][0] != first) continue;
     if (p.kind == "angle_horizontal") {
-      const double hi = p.range.hi < p.range.lo ? p.range.hi + 360 : p.range.hi;
-      bearing = (p.range.lo + hi) / 2;
+      bearing = arc_middle(p.range);
     } else if (p.kind == "angle_vertical" && std::isfinite(p.range.lo) && std::isfinite(p.range.hi)) {
       elevation = (p.range.lo + p.range.hi) / 2;
     }
@@ -58,10 +49,10 @@ const CameraFrame& GroupFraming::update(const CharacterState& character, double 
   const Shot& shot = problem_.shot();
   // The group's centre and the radius of the sphere round their boxes.
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (int t : wanted_) centre += problem_.world().people()[static_cast<std::size_t>(t)].body.centre();
-  centre /= static_cast<double>(wanted_.size());
+  for (int t : problem_.wanted()) centre += problem_.world().people()[static_cast<std::size_t>(t)].body.centre();
+  centre /= static_cast<double>(problem_.wanted().size());
   double radius = 0;
-  for (int t : wanted_) {
+  for (int t : problem_.wanted()) {
     const Aabb& b = problem_.world().people()[static_cast<std::size_t>(t)].body;
     radius = std::max(radius, (b.centre() - centre).norm() + b.size().norm() / 2);
   }

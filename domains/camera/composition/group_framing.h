@@ -31,7 +31,6 @@ class GroupFraming : public CameraController {
   const Scene* scene_;
   double max_speed_;
   CompositionProblem problem_;  // for the people at the frame's time and the evaluation
-  std::vector<int> wanted_;     // indices into the world's people
   Eigen::Vector3d offset_;      // unit: from the group's centre toward the camera
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   bool started_ = false;

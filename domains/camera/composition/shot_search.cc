@@ -43,18 +43,7 @@ class Framing {
   Framing(const csp::Problem& problem, const CompositionProblem& owner)
       : problem_(&problem), owner_(&owner) {
     const auto& people = owner.world().people();
-    // The people the shot wants in the image: every target but those it only keeps out
-    // (framed or visible with range [0, 0]: an exclusion).
-    std::vector<int> seen;
-    const std::vector<ShotProperty>& properties = owner.shot().properties;
-    for (std::size_t i = 0; i < properties.size(); ++i) {
-      const ShotProperty& p = properties[i];
-      if ((p.kind == "framed" || p.kind == "visible") && p.range.hi <= 0) continue;
-      for (int t : owner.targets()[i]) {
-        if (std::find(seen.begin(), seen.end(), t) == seen.end()) seen.push_back(t);
-      }
-    }
-    if (seen.empty()) seen.push_back(owner.targets()[0][0]);
+    std::vector<int> seen = owner.wanted();
     centre_.setZero();
     for (int t : seen) centre_ += people[static_cast<std::size_t>(t)].aim;
     centre_ /= static_cast<double>(std::max<std::size_t>(1, seen.size()));
@@ -168,8 +157,7 @@ Vantage vantage_of(const CompositionProblem& owner, int t, double fov) {
       const double fraction = p.measure == "area" ? std::sqrt(wanted) : wanted;
       v.distance = extent / (image * fraction);
     } else if (p.kind == "angle_horizontal") {
-      const double hi = p.range.hi < p.range.lo ? p.range.hi + 360 : p.range.hi;
-      v.bearings.push_back(person.yaw + (p.range.lo + hi) / 2);
+      v.bearings.push_back(person.yaw + arc_middle(p.range));
     } else if (p.kind == "angle_vertical") {
       // Its middle, and near both ends when they are finite (a group often fits at one end).
       const double m = mid(p.range, 10);

@@ -90,16 +90,17 @@ void TrackingCamera::jump_to_aim() {
 const CameraFrame& TrackingCamera::update(const CharacterState& character, double dt) {
   const auto began = std::chrono::steady_clock::now();
   t_ = character.t;
-  problem_.set_time(t_);
   frame_.cut = false;
   frame_.cut_reason = CutReason::kNone;
   if (!started_) {
     // The first frame: a global solve from nowhere, and the camera starts there.
+    problem_.set_time(t_);
     aim_ = problem_.assignment(pose_);
     solve_globally(options_.resolve_evaluations * 5);
     jump_to_aim();
     started_ = true;
     last_cut_t_ = t_;  // the film starts a shot: no cut within its minimum length either
+    evaluation_ = problem_.evaluate(pose_);
   } else {
     // The pose to aim for is solved where the people will be when the camera gets there
     // (the two stages lag about 2 x smoothing), forecast from their velocities.
@@ -122,16 +123,16 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     if ((!evaluation_.feasible || hides_someone(evaluation_)) &&
         (aim.position - pose_.position).norm() > max_step(dt) &&
         t_ - last_cut_t_ >= options_.min_shot_seconds) {
-      const ShotEvaluation there = problem_.evaluate(aim);
+      ShotEvaluation there = problem_.evaluate(aim);
       if (there.feasible && !hides_someone(there)) {
         jump_to_aim();
+        evaluation_ = std::move(there);
         frame_.cut = true;
         frame_.cut_reason = CutReason::kVisibilityLost;
         last_cut_t_ = t_;
       }
     }
   }
-  evaluation_ = problem_.evaluate(pose_);
   fill_frame(problem_, pose_, evaluation_.feasible, problem_.pose(aim_).position, frame_);
   frame_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return frame_;

@@ -1,9 +1,9 @@
-#include "apps/json_text.h"
+#include "sightline/csp/json_text.h"
 
 #include <cmath>
 #include <cstdio>
 
-namespace sightline::apps {
+namespace sightline::csp {
 
 std::string json_string(const std::string& text) {
   std::string out = "\"";
@@ -34,4 +34,4 @@ std::string json_number(double value) {
   return text;
 }
 
-}  // namespace sightline::apps
+}  // namespace sightline::csp
