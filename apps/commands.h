@@ -21,6 +21,7 @@ void add_scene_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_follow_command(CLI::App& app);
 void add_compose_command(CLI::App& app);
+void add_edit_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_level_command(CLI::App& app);
 void add_view_command(CLI::App& app);

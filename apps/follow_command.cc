@@ -17,6 +17,7 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/solvers/registry.h"
 
 namespace sightline::apps {
@@ -72,9 +73,10 @@ void run_follow(const FollowOptions& o) {
                                            : camera::read_profile_file(o.profile);
   }
   camera::ChaseCameraOptions options;
-  options.solver = !o.solver.empty()   ? o.solver
-                   : scene.shot() ? camera::kRecommendedCompositionSolver
-                                  : camera::kRecommendedCameraSolver;
+  options.solver = !o.solver.empty()                ? o.solver
+                   : scene.shot()                    ? camera::kRecommendedCompositionSolver
+                   : experiments::is_edit_scene(scene) ? camera::kDefaultEditSolver
+                                                       : camera::kRecommendedCameraSolver;
   options.seed = o.seed;
   options.visibility_guard = !o.no_guard;
   options.target_smoothing_stages = o.smoothing_stages;
@@ -99,7 +101,8 @@ void add_follow_command(CLI::App& app) {
   cmd->add_option("--solver", options->solver,
                   "registered solver or pipeline, e.g. occlusion-octree, bourne-octree, sls, "
                   "occlusion-octree>ceres-refine (default: occlusion-octree, the recommended "
-                  "camera solver; shot-search for a scene with a shot: block)");
+                  "camera solver; shot-search for a scene with a shot: block; chain, the "
+                  "editor's, for a scene with only a script)");
   cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
   cmd->add_option("--profile", options->profile,
                   "camera profile: a preset name (default = anticipating, thesis = thesis-default, close-follow, high-follow, anticipating-path) or "

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   apps::add_scene_command(app);
   apps::add_follow_command(app);
   apps::add_compose_command(app);
+  apps::add_edit_command(app);
   apps::add_convert_command(app);
   apps::add_level_command(app);
   apps::add_view_command(app);

@@ -25,7 +25,7 @@ set(SIGHTLINE_RESEARCH_csp sightline_csp sightline_csp_kinds sightline_csp_yaml 
     sightline_nqueens)
 set(SIGHTLINE_RESEARCH_files sightline_csp_files sightline_toulbar2 sightline_colouring)
 set(SIGHTLINE_RESEARCH_camera sightline_level sightline_camera sightline_camera_control
-    sightline_camera_baselines sightline_composition sightline_camera_files)
+    sightline_camera_baselines sightline_composition sightline_editing sightline_camera_files)
 set(SIGHTLINE_RESEARCH_suites sightline_runs sightline_scene_sources sightline_replay
     sightline_suite sightline_reports sightline_execution sightline_mpi_engine
     sightline_experiments recast_detour)

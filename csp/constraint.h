@@ -98,8 +98,9 @@ class IncrementalState {
 };
 
 // What a solver or a file writer may exploit in a constraint, asked of it (table_costs(),
-// distinctness()) instead of found by downcasting to a kind: explicit cost tables (the
-// `table` kind) and pairwise-distinct values (`all_different`). The default is neither.
+// distinctness(), run_lengths()) instead of found by downcasting to a kind: explicit cost
+// tables (the `table` kind), pairwise-distinct values (`all_different`) and runs of equal
+// values (`stretch`). The default is none of them.
 class TableCosts {
  public:
   virtual ~TableCosts() = default;
@@ -108,6 +109,13 @@ class TableCosts {
   // Listed tuple i: its value at `position` (scope order), and its cost.
   virtual double tuple_value(std::size_t i, std::size_t position) const = 0;
   virtual double tuple_cost(std::size_t i) const = 0;
+};
+
+// Runs of equal values (the `stretch` kind): the violation is the sum, over the maximal runs
+// of equal consecutive values along the scope, of max(0, min_length - length) / min_length,
+// so a sequence solver can count runs instead of evaluating the whole scope.
+struct RunLengths {
+  std::size_t min_length = 1;
 };
 
 struct Distinctness {
@@ -138,6 +146,7 @@ class Constraint {
   // Structure a solver may exploit (see TableCosts above): null / empty when none.
   virtual const TableCosts* table_costs() const { return nullptr; }
   virtual std::optional<Distinctness> distinctness() const { return std::nullopt; }
+  virtual std::optional<RunLengths> run_lengths() const { return std::nullopt; }
 
   // 0 when satisfied, > 0 otherwise. `values` is the whole assignment, indexed by VariableId.
   virtual double violation(std::span<const double> values) const = 0;

@@ -2,6 +2,7 @@
 #include "sightline/solvers/registry.h"
 #include "sightline/solvers/bnb.h"
 #include "sightline/solvers/ceres_refine.h"
+#include "sightline/solvers/chain.h"
 #include "sightline/solvers/grid.h"
 #include "sightline/solvers/lns.h"
 #include "sightline/solvers/sliding_octree.h"
@@ -26,6 +27,8 @@ void register_builtin_solvers(SolverRegistry& registry) {
       "tabu search on exact weighted deltas, move table kept incrementally (discrete); anytime");
   register_solver<LnsSolver>(registry, "lns",
       "large-neighbourhood search: neighbourhoods along the constraint graph solved by bnb");
+  register_solver<ChainSolver>(registry, "chain",
+      "exact dynamic programming over a sequence (unary, consecutive pairs, stretch); optimal");
 }
 
 }  // namespace sightline::solvers

@@ -5,6 +5,7 @@
 #include "sightline/csp/kinds/expression.h"
 #include "sightline/csp/kinds/linear.h"
 #include "sightline/csp/kinds/not_equal.h"
+#include "sightline/csp/kinds/stretch.h"
 #include "sightline/csp/kinds/table.h"
 #include "sightline/csp/kinds/value_set.h"
 
@@ -20,6 +21,7 @@ void register_builtin_kinds(ConstraintKinds& kinds) {
   kinds.add(in_kind());
   kinds.add(not_in_kind());
   kinds.add(equals_kind());
+  kinds.add(stretch_kind());
 }
 
 }  // namespace sightline::csp

@@ -394,9 +394,16 @@ Scene parse_scene(const csp::Spec& spec, const std::string& base_dir) {
       trajectory = target->trajectory;
       keyframe_where = target->keyframe_where;
       nobody_chased = true;
+    } else if (spec.find("shots") || spec.find("script")) {
+      // Nobody is chased and an editor films them: the frames follow the first actor.
+      character = actors.front().shape;
+      trajectory = actors.front().trajectory;
+      keyframe_where = actors.front().keyframe_where;
+      nobody_chased = true;
     } else {
       spec.fail("expected a trajectory: (the character's), an actor named 'character' to "
-                "follow, or a shot: block framing the actors (FORMATS.md \"Actors\")");
+                "follow, a shot: block framing the actors, or a script: or shots: for an "
+                "editor (FORMATS.md \"Actors\")");
     }
   }
   if (trajectory.duration() * frame_rate > kMaxSceneFrames) {

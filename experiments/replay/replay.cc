@@ -194,7 +194,28 @@ std::string run_json(const ReplayRun& run, int shared_track, const Grid& grid) {
     out << ",\"track\":\"" << character_track(run.trace) << "\"";
   }
   out << ",\"camera_q\":\"" << quantised(run.trace, grid, true) << "\",\"target_q\":\""
-      << quantised(run.trace, grid, false) << "\",\"flags\":\"" << base64_of(flags) << "\"}";
+      << quantised(run.trace, grid, false) << "\",\"flags\":\"" << base64_of(flags) << "\"";
+  // A composing camera's lens (a shot's tracking camera, an edited film): fov and roll per
+  // frame, degrees, so the main-camera panel sees what it saw.
+  if (std::any_of(run.trace.begin(), run.trace.end(), [](const TraceRow& r) { return r.fov > 0; })) {
+    std::vector<float> lens;
+    lens.reserve(run.trace.size() * 2);
+    for (const TraceRow& r : run.trace) {
+      lens.push_back(static_cast<float>(r.fov));
+      lens.push_back(static_cast<float>(r.roll));
+    }
+    out << ",\"lens\":\"" << base64_of(lens) << "\"";
+  }
+  // An edited film's shots, for the timeline under the scrub bar: [name, first frame] each.
+  if (std::any_of(run.trace.begin(), run.trace.end(), [](const TraceRow& r) { return !r.shot.empty(); })) {
+    out << ",\"shots\":[";
+    for (std::size_t i = 0, n = 0; i < run.trace.size(); ++i) {
+      if (i > 0 && !run.trace[i].cut && run.trace[i].shot == run.trace[i - 1].shot) continue;
+      out << (n++ ? "," : "") << "[" << json_string(run.trace[i].shot) << "," << i << "]";
+    }
+    out << "]";
+  }
+  out << "}";
   return out.str();
 }
 

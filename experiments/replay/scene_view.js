@@ -71,6 +71,7 @@
     d.runs.forEach(function (r) {
       r.cam = dequantise(r.camera_q, d.grid); r.tgt = dequantise(r.target_q, d.grid); r.flag = bytes(r.flags);
       if (r.track) r.trk = f32(r.track);
+      if (r.lens) r.lns = f32(r.lens);  // fov, roll per frame (degrees)
     });
     d.runs.forEach(function (r) { if (!r.trk) r.trk = d.runs[r.track_of].trk; });
     return d;
@@ -174,6 +175,7 @@
     var sb = el('div', 'replay-scrub-box', tl);
     ui.scrub = el('input', 'replay-scrub', sb); ui.scrub.type = 'range'; ui.scrub.min = 0; ui.scrub.step = 1;
     ui.marks = el('canvas', 'replay-marks', sb);
+    ui.shots = el('canvas', 'replay-shots', sb);  // an edited film's shots, one band each
     ui.time = el('span', 'replay-time', tl);
     ui.link = el('a', 'replay-link', tl, 'link to this moment');
     ui.link.title = 'a link that opens this run paused at this time';
@@ -338,7 +340,40 @@
       if (run.flag[i] & 2) { g.fillStyle = '#e03131'; g.fillRect(x, h / 2, Math.max(1, w / n), h / 2); }
       if (run.flag[i] & 1) { g.fillStyle = '#212529'; g.fillRect(x, 0, 2, h); }
     }
+    this.drawShots(run);
   };
+  // The timeline of an edited film's shots: a band per shot, coloured by its name, labelled.
+  Replay.prototype.drawShots = function (run) {
+    var c = this.ui.shots, shots = run.shots || [], n = run.frames;
+    c.style.display = shots.length ? 'block' : 'none';
+    if (!shots.length) return;
+    var w = c.width = Math.max(1, c.clientWidth), h = c.height = Math.max(1, c.clientHeight);
+    var g = c.getContext('2d'), palette = ['#a5d8ff', '#b2f2bb', '#ffec99', '#ffc9c9', '#d0bfff',
+                                           '#99e9f2', '#ffd8a8', '#eebefa'];
+    var colours = {};
+    g.clearRect(0, 0, w, h);
+    g.font = '10px sans-serif';
+    g.textBaseline = 'middle';
+    for (var k = 0; k < shots.length; ++k) {
+      var name = shots[k][0], from = shots[k][1], to = k + 1 < shots.length ? shots[k + 1][1] : n;
+      if (!(name in colours)) colours[name] = palette[Object.keys(colours).length % palette.length];
+      var x0 = n > 1 ? from / (n - 1) * (w - 1) : 0, x1 = n > 1 ? to / (n - 1) * (w - 1) : w;
+      g.fillStyle = colours[name];
+      g.fillRect(x0, 0, Math.max(1, x1 - x0), h);
+      g.fillStyle = '#212529';
+      g.fillRect(x0, 0, 1, h);
+      g.save();
+      g.beginPath(); g.rect(x0 + 2, 0, Math.max(0, x1 - x0 - 4), h); g.clip();
+      g.fillText(name, x0 + 3, h / 2);
+      g.restore();
+    }
+  };
+  // The name of the shot at a frame of an edited film, or ''.
+  function shotAt(run, frame) {
+    var shots = run.shots || [], name = '';
+    for (var k = 0; k < shots.length && shots[k][1] <= frame; ++k) name = shots[k][0];
+    return name;
+  }
   Replay.prototype.setPlaying = function (on) {
     var self = this;
     if (on === this.playing) return;
@@ -417,6 +452,10 @@
       pc.position.copy(eye);
       pc.up.set(0, 1, 0);
       pc.lookAt(at);
+      // A composing camera's own lens (FORMATS.md: roll turns the right axis toward up).
+      var fov = run.lns && run.lns[f * 2] > 0 ? run.lns[f * 2] : self.data.fov;
+      if (pc.fov !== fov) { pc.fov = fov; pc.updateProjectionMatrix(); }
+      if (run.lns) pc.rotateZ(run.lns[f * 2 + 1] * Math.PI / 180);
       state[slot] = { run: run, frame: f, hidden: hidden };
       var p = ui.panel[slot];
       p.box.classList.toggle('replay-hidden-frame', hidden);
@@ -446,7 +485,8 @@
     ui.link.href = '#run=' + encodeURIComponent(run.id) + '&t=' + run.trk[a.frame * 5].toFixed(3) +
         (state.b ? '&run2=' + encodeURIComponent(state.b.run.id) : '');
     ui.time.textContent = 't = ' + run.trk[a.frame * 5].toFixed(2) + ' s, frame ' + a.frame + ' / ' +
-        (run.frames - 1) + ((run.flag[a.frame] & 1) ? ', cut' : '') + (a.hidden ? ', look-at hidden' : '');
+        (run.frames - 1) + ((run.flag[a.frame] & 1) ? ', cut' : '') + (a.hidden ? ', look-at hidden' : '') +
+        (run.shots ? ', shot: ' + shotAt(run, a.frame) : '');
     s.dataset.run = run.id;
     s.dataset.frame = a.frame;
     s.dataset.t = run.trk[a.frame * 5];

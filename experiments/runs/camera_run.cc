@@ -1,6 +1,8 @@
 #include "sightline/experiments/runs/camera_run.h"
 
 #include <iomanip>
+
+#include "sightline/experiments/runs/edit_run.h"
 #include <sstream>
 
 namespace sightline::experiments {
@@ -55,6 +57,18 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
   CameraRun run;
   run.solver = options.solver;
   run.profile = profile.name;
+  if (is_edit_scene(scene)) {
+    camera::EditorOptions editor;
+    editor.solver = options.solver.empty() ? camera::kDefaultEditSolver : options.solver;
+    editor.seed = options.seed;
+    editor.footage.seed = options.seed;
+    run.solver = editor.solver;
+    const camera::Edit edit = camera::edit_scene(scene, editor);
+    run.trace = edit_trace(scene, edit);
+    run.edit = edit_metrics(scene, run.trace, editor.weights.min_shot_seconds);
+    run.metrics = compute_metrics(run.trace, metrics_input(scene, profile, options.max_speed / scene.frame_rate()));
+    return run;
+  }
   const std::unique_ptr<camera::CameraController> controller =
       camera::make_controller(options.solver, scene, profile, options);
   const std::size_t frames = scene.frame_count();
@@ -93,6 +107,20 @@ CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& pr
 
 std::string summary_paragraph(const camera::Scene& scene, const CameraRun& run) {
   const RunMetrics& m = run.metrics;
+  if (run.edit) {
+    const EditMetrics& e = *run.edit;
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(1);
+    out << "Scene '" << scene.name() << "', edited by '" << run.solver << "': " << m.frames
+        << " frames, " << e.shots << " shots, " << e.cuts << " cuts (" << e.cuts_per_minute
+        << " a minute, mean shot " << std::setprecision(2) << e.mean_shot_seconds
+        << " s); independent check: " << e.line_crossings << " line crossings, " << e.jump_cuts
+        << " jump cuts, " << e.short_shots << " short shots; the speaker shown "
+        << std::setprecision(1) << e.speaker_shown_percent << "% of speaking time, from the front and "
+        << "readable " << e.speaker_readable_percent << "%.";
+    return out.str();
+  }
   if (run.shot) {
     const ShotMetrics& s = *run.shot;
     std::ostringstream out;

@@ -13,6 +13,7 @@
 
 #include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/experiments/runs/controllers.h"
+#include "sightline/experiments/runs/edit_metrics.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/experiments/runs/metrics.h"
 #include "sightline/experiments/runs/shot_metrics.h"
@@ -25,13 +26,17 @@ struct CameraRun {
   RunMetrics metrics;
   // For a scene with a shot: block (a tracking shot): how it kept its people.
   std::optional<ShotMetrics> shot;
+  // For a scene an editor films (is_edit_scene): the film judged by continuity editing.
+  std::optional<EditMetrics> edit;
   std::string solver;
   std::string profile;
 };
 
 // Runs `scene` with `profile` and the controller named by `options.solver` (a solver or
 // pipeline driving a ChaseCamera, or a baseline such as "spring-arm"). Throws what
-// make_controller throws for bad names or options.
+// make_controller throws for bad names or options. A scene an editor films (edit_run.h) is
+// edited instead, `options.solver` solving the editing model (empty: chain; "greedy": the
+// greedy editor).
 CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
                      const camera::ChaseCameraOptions& options);
 

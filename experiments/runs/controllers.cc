@@ -26,6 +26,11 @@ std::unique_ptr<CameraController> make_controller(const std::string& name, const
     tracking.seed = options.seed;
     return std::make_unique<TrackingCamera>(scene, tracking);
   }
+  if (!scene.has_character()) {
+    throw std::invalid_argument("scene '" + scene.name() + "' has nobody to follow and no shot: "
+                                "block to frame: a scene with only a script: or shots: is "
+                                "filmed by `sightline edit`");
+  }
   if (name == "spring-arm" || name == "pull-forward") {
     // The baselines have their own options (defaults); they share the smooth-motion bound
     // that decides what counts as a cut, and take no solver options.

@@ -80,7 +80,8 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot write trace file '" + tmp + "'");
     const bool lens = std::any_of(rows.begin(), rows.end(), [](const TraceRow& r) { return r.fov > 0; });
-    out << trace_header() << (lens ? ",fov,roll" : "") << "\n";
+    const bool shots = std::any_of(rows.begin(), rows.end(), [](const TraceRow& r) { return !r.shot.empty(); });
+    out << trace_header() << (lens || shots ? ",fov,roll" : "") << (shots ? ",shot" : "") << "\n";
     char line[512];
     for (const TraceRow& r : rows) {
       // Fixed precision keeps traces byte-for-byte reproducible and diffable; camera positions
@@ -93,12 +94,14 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
                     r.target.y(), r.target.z(), r.cut ? 1 : 0, r.cost, r.solve_us,
                     r.controller_visible ? 1 : 0, r.desired_height, r.desired_distance,
                     r.desired_orientation, reason_cell(r.cut_reason).c_str());
-      if (lens) {
+      if (lens || shots) {
         std::string text(line);
         text.pop_back();  // the newline
         char cells[64];
-        std::snprintf(cells, sizeof cells, ",%.4f,%.4f\n", r.fov, r.roll);
+        std::snprintf(cells, sizeof cells, ",%.4f,%.4f", r.fov, r.roll);
         out << text << cells;
+        if (shots) out << "," << reason_cell(r.shot);
+        out << "\n";
         continue;
       }
       out << line;
@@ -148,6 +151,13 @@ std::vector<TraceRow> read_trace_csv(const std::string& path) {
   std::size_t reason_at = 0;  // 0: absent
   for (std::size_t i = public_columns.size(); i < header.size(); ++i) {
     if (header[i].text == kCutReasonColumn) reason_at = i;
+  }
+  // The lens and the shot of a composing or edited run.
+  std::size_t fov_at = 0, roll_at = 0, shot_at = 0;
+  for (std::size_t i = public_columns.size(); i < header.size(); ++i) {
+    if (header[i].text == "fov") fov_at = i;
+    if (header[i].text == "roll") roll_at = i;
+    if (header[i].text == "shot") shot_at = i;
   }
 
   std::vector<TraceRow> rows;
@@ -212,6 +222,15 @@ std::vector<TraceRow> read_trace_csv(const std::string& path) {
                               "column 'cut_reason': expected a cut reason, got nothing");
       }
       r.cut_reason = c.text;
+    }
+    if (fov_at) r.fov = number(fov_at, "fov");
+    if (roll_at) r.roll = number(roll_at, "roll");
+    if (shot_at) {
+      const Cell& c = cells[shot_at];
+      if (c.text.empty()) {
+        throw csp::InputError({path, line_number, c.column}, "column 'shot': expected a shot's name, got nothing");
+      }
+      r.shot = unquote(c.text);
     }
     rows.push_back(r);
   }

@@ -37,6 +37,10 @@ struct TraceRow {
   // The lens of a composing camera (a shot: scene's tracking shot), degrees; 0 for the chase
   // camera. Written as the columns fov and roll when some row has a fov.
   double fov = 0, roll = 0;
+  // The shot in use (an edited run, FORMATS.md "Script and named shots"); empty otherwise.
+  // Written as the last column, `shot`, when some row has one (commas and quotes become
+  // '-': the cell is one word of CSV).
+  std::string shot;
   // The 1-based line this row was read from (read_trace_csv), for messages; 0 otherwise.
   int line = 0;
 };
@@ -50,7 +54,8 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
 // public columns in order (names may be quoted; blanks around cells and Windows line ends are
 // fine). Columns after those may hold anything; this project's extras (visible,
 // desired_height, ...) are read by name wherever they are. Throws csp::InputError naming the
-// file, line and column on malformed input (a column named cut_reason is read as a word): a missing or misnamed public column (which one),
+// file, line and column on malformed input (columns named cut_reason and shot are read as words; fov
+// and roll as numbers): a missing or misnamed public column (which one),
 // a row with fewer or more cells than the header, a cell of a read column that is not a
 // finite number, a frame number that is not whole.
 // Blank lines are skipped.

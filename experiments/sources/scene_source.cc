@@ -5,9 +5,11 @@
 #include <stdexcept>
 
 #include "sightline/csp/input_error.h"
+#include "sightline/domains/camera/composition/shot.h"
 #include "sightline/domains/camera/profile_text.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/file_globs.h"
+#include "sightline/experiments/sources/conversation_generator.h"
 #include "sightline/experiments/sources/scene_families.h"
 #include "sightline/experiments/sources/scene_generator.h"
 
@@ -94,6 +96,14 @@ void add_builtin_sources(SceneSources& sources) {
                        o.seed = seed;
                        return generate_crossings(o);
                      }));
+  sources.add(seeded_source("conversation",
+                            "two or three people talking (standing, walking, circling, one "
+                            "coming in), with a script: edited, not chased",
+                            [](std::uint64_t seed) {
+                              ConversationOptions o;
+                              o.seed = seed;
+                              return generate_conversation(o);
+                            }));
 }
 
 }  // namespace
@@ -192,6 +202,18 @@ std::string scene_fingerprint(const camera::Scene& scene) {
     out << "level " << level->file << " " << level->map << " " << level->mesh.size() << "\n";
   }
   if (scene.camera_start()) out << "start " << exact(*scene.camera_start()) << "\n";
+  // People's facing and the script (an editor's scene); nothing for scenes without them.
+  for (const camera::Actor& a : scene.actors()) {
+    out << "actor " << a.name << " " << exact(a.shape.look_at_height);
+    for (const camera::Keyframe& k : a.trajectory.keyframes()) out << " | " << exact(k.t) << " " << exact(k.yaw);
+    out << "\n";
+  }
+  if (const auto* script = scene.script()) {
+    for (const camera::ScriptEntry& e : *script) {
+      out << "line " << exact(e.t0) << " " << exact(e.t1) << " " << e.speaker << " " << e.to << " "
+          << e.action << "\n";
+    }
+  }
   out << "profile " << camera::profile_text(scene.profile());
   return out.str();
 }

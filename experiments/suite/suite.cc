@@ -12,6 +12,7 @@
 
 #include "sightline/csp/files/yaml_spec.h"
 #include "sightline/experiments/runs/controllers.h"
+#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
@@ -215,8 +216,23 @@ void read_camera(const Spec& camera_spec, const std::string& base_dir,
       s.limits = read_limits(entry.at("limits"), s.limits);
     if (!only) {
       try {
-        const SuiteScene& first = suite.scenes.front();
-        camera::make_controller(s.options.solver, *first.scene, first.scene->profile(), s.options);
+        // Checked against the first scene a camera films, and as the editing model's solver
+        // when some scene is edited (experiments/runs/edit_run.h).
+        bool edits = false;
+        const SuiteScene* filmed = nullptr;
+        for (const SuiteScene& scene : suite.scenes) {
+          if (is_edit_scene(*scene.scene)) {
+            edits = true;
+          } else if (filmed == nullptr) {
+            filmed = &scene;
+          }
+        }
+        if (filmed) {
+          camera::make_controller(s.options.solver, *filmed->scene, filmed->scene->profile(), s.options);
+        }
+        if (edits && s.options.solver != camera::kGreedyEditor) {
+          solvers::SolverRegistry::global().create(s.options.solver, s.options.solver_options);
+        }
       } catch (const csp::InputError&) {
         throw;
       } catch (const std::exception& e) {

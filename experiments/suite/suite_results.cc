@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sightline/experiments/runs/edit_metrics.h"
+#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/experiments/runs/metrics.h"
 
 namespace sightline::experiments {
@@ -38,6 +40,11 @@ double metric_value(const std::vector<std::string>& columns, const RunResult& r,
 std::vector<std::string> metric_columns(const Suite& suite) {
   std::vector<std::string> columns;
   if (!suite.scenes.empty()) columns = metric_names();
+  // Scenes an editor films add the edit's columns (suites without them keep their columns).
+  if (std::any_of(suite.scenes.begin(), suite.scenes.end(),
+                  [](const SuiteScene& s) { return s.scene && is_edit_scene(*s.scene); })) {
+    columns.insert(columns.end(), edit_metric_names().begin(), edit_metric_names().end());
+  }
   if (!suite.problems.empty()) {
     columns.insert(columns.end(), toy_metric_names().begin(), toy_metric_names().end());
   }

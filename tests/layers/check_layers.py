@@ -25,6 +25,7 @@ ALLOWED = {
     "domains/camera/control": ["csp", "solvers", "domains/camera", "world.h", "vec3.h"],
     "domains/camera/baselines": ["csp", "domains/camera", "world.h", "vec3.h"],
     "domains/camera/composition": ["csp", "solvers", "domains/camera", "world.h", "vec3.h"],
+    "domains/camera/editing": ["csp", "solvers", "domains/camera", "world.h", "vec3.h"],
     "experiments/runs": ["csp", "solvers", "domains", "experiments/runs", "world.h", "vec3.h"],
     "experiments/sources": ["csp", "solvers", "domains", "experiments/runs", "experiments/sources"],
     "experiments/replay": ["csp", "solvers", "domains", "experiments/runs", "experiments/replay"],
@@ -41,10 +42,14 @@ ALLOWED = {
 # and the baselines nothing of the constraint camera's controller.
 DENIED = {
     "domains/camera": ["domains/camera/control", "domains/camera/baselines",
-                       "domains/camera/composition"],
-    "domains/camera/control": ["domains/camera/baselines", "domains/camera/composition"],
-    "domains/camera/baselines": ["domains/camera/control", "domains/camera/composition"],
-    "domains/camera/composition": ["domains/camera/control", "domains/camera/baselines"],
+                       "domains/camera/composition", "domains/camera/editing"],
+    "domains/camera/control": ["domains/camera/baselines", "domains/camera/composition",
+                               "domains/camera/editing"],
+    "domains/camera/baselines": ["domains/camera/control", "domains/camera/composition",
+                                 "domains/camera/editing"],
+    "domains/camera/composition": ["domains/camera/control", "domains/camera/baselines",
+                                   "domains/camera/editing"],
+    "domains/camera/editing": ["domains/camera/control", "domains/camera/baselines"],
     "api": ["domains/camera/baselines"],
 }
 # Files of a folder built into a target above it: the scene file reader (camera_files) reads
