@@ -11,6 +11,7 @@
 #include "apps/commands.h"
 #include "sightline/domains/camera/camera_problem.h"
 #include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/sources/conversation_generator.h"
 #include "sightline/experiments/sources/shot_problems.h"
 
 namespace sightline::apps {
@@ -147,6 +148,28 @@ void add_scene_command(CLI::App& app) {
     std::ofstream file(*out);
     file << text;
     if (!file) throw std::runtime_error("cannot write " + *out);
+  });
+  CLI::App* talk = scene->add_subcommand(
+      "conversation", "write the generated conversation SEED (actors and a script, for the "
+                      "editor: experiments/sources/conversation_generator.h) as a scene file");
+  auto options = std::make_shared<experiments::ConversationOptions>();
+  auto talk_out = std::make_shared<std::string>();
+  talk->add_option("seed", options->seed, "the conversation's seed (>= 1)")->required()->check(CLI::PositiveNumber);
+  talk->add_option("--seconds", options->seconds, "its length (default 40)")->check(CLI::Range(6.0, 3600.0));
+  talk->add_option("--layout", options->layout,
+                   "0 standing, 1 walking, 2 circling, 3 someone comes in (default: by seed)")
+      ->check(CLI::Range(0, 3));
+  talk->add_option("--out", *talk_out, "write it here (default: standard output)");
+  talk->callback([options, talk_out] {
+    const std::string text = experiments::conversation_yaml(*options);
+    experiments::generate_conversation(*options);  // valid by the scene reader's rules
+    if (talk_out->empty()) {
+      std::cout << text;
+      return;
+    }
+    std::ofstream file(*talk_out);
+    file << text;
+    if (!file) throw std::runtime_error("cannot write " + *talk_out);
   });
 }
 

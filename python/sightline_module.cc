@@ -25,7 +25,10 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/execution/suite_runner.h"
+#include "sightline/domains/camera/editing/editor.h"
 #include "sightline/experiments/runs/camera_run.h"
+#include "sightline/experiments/runs/edit_metrics.h"
+#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/experiments/suite/suite.h"
 #include "sightline/solvers/registry.h"
 
@@ -206,9 +209,10 @@ py::dict follow(const std::string& scene_path, const std::string& solver, const 
     chosen = camera::is_preset(profile) ? camera::preset_profile(profile) : camera::read_profile_file(profile);
   }
   camera::ChaseCameraOptions options;
-  options.solver = !solver.empty() ? solver
-                   : scene.shot()  ? camera::kRecommendedCompositionSolver
-                                   : camera::kRecommendedCameraSolver;
+  options.solver = !solver.empty()                  ? solver
+                   : scene.shot()                      ? camera::kRecommendedCompositionSolver
+                   : experiments::is_edit_scene(scene) ? camera::kDefaultEditSolver
+                                                       : camera::kRecommendedCameraSolver;
   options.seed = seed;
   experiments::CameraRun run;
   {
@@ -223,6 +227,20 @@ py::dict follow(const std::string& scene_path, const std::string& solver, const 
   const std::vector<double> values = experiments::metric_values(run.metrics);
   for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) metrics[py::str(names[i])] = values[i];
   out["metrics"] = metrics;
+  if (run.edit) {
+    // An edited film: its shots [(start time, name)] and the continuity judge's metrics.
+    py::list shots;
+    for (std::size_t i = 0; i < run.trace.size(); ++i) {
+      if (i == 0 || run.trace[i].cut) shots.append(py::make_tuple(run.trace[i].t, run.trace[i].shot));
+    }
+    out["shots"] = shots;
+    py::dict edit;
+    const std::vector<double> edit_values = experiments::edit_metric_values(*run.edit);
+    for (std::size_t i = 0; i < edit_values.size(); ++i) {
+      edit[py::str(experiments::edit_metric_names()[i])] = edit_values[i];
+    }
+    out["edit"] = edit;
+  }
   return out;
 }
 
@@ -371,7 +389,9 @@ PYBIND11_MODULE(_sightline, m) {
   }, "Every registered constraint kind with its fields.");
   m.def("follow", &follow, py::arg("scene"), py::arg("solver") = "", py::arg("profile") = "",
         py::arg("seed") = 1,
-        "Films a scene: {'trace': numpy structured array, 'summary': str, 'metrics': dict}.");
+        "Films a scene: {'trace': numpy structured array, 'summary': str, 'metrics': dict}; a scene "
+        "with only a script is edited (solver: the editing model's, default chain; 'greedy'), "
+        "adding 'shots' [(start, name)] and 'edit' (the continuity judge's metrics).");
   m.def("run_suite", &run_suite, py::arg("suite"), py::arg("out"), py::arg("jobs") = 1,
         py::arg("isolated") = false, py::arg("program") = "",
         "Runs (or resumes) a suite into `out`; isolated runs need `program` (the sightline binary).");

@@ -40,6 +40,63 @@ struct Table {
   }
 };
 
+// Edited films (scenes with a script and nobody to chase, experiments/runs/edit_run.h), by
+// the rules of continuity editing (experiments/runs/edit_metrics.h): per editor, then per run.
+std::string edited_films_markdown(const SuiteOutcome& outcome, const std::vector<std::string>& columns) {
+  if (std::find(columns.begin(), columns.end(), "edit_line_crossings") == columns.end()) return "";
+  auto value = [&](const RunResult& r, const std::string& name) { return metric_value(columns, r, name); };
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const RunResult*>> by_editor;
+  for (const RunResult& r : outcome.results) {
+    if (r.kind != "camera" || r.status != "ok" || std::isnan(value(r, "edit_line_crossings"))) continue;
+    if (!by_editor.count(r.solver)) order.push_back(r.solver);
+    by_editor[r.solver].push_back(&r);
+  }
+  if (order.empty()) return "";
+  std::ostringstream out;
+  out << "### Edited films\n\nJudged from each trace and its scene by the rules of continuity "
+         "editing (experiments/runs/edit_metrics.h): cuts across the line of action, jump cuts, "
+         "shots under the minimum length are totals; the speaker shown (and from the front, a "
+         "fifth of the image or more: readable) is the share of speaking time, worst run.\n\n";
+  Table t{{"editor", "runs", "line crossings", "jump cuts", "short shots", "cuts / min (mean)",
+           "mean shot s (mean)", "speaker shown % (min)", "readable % (min)", "action shown % (min)"},
+          {}};
+  for (const std::string& editor : order) {
+    const auto& rs = by_editor[editor];
+    double crossings = 0, jumps = 0, shorts = 0, cpm = 0, shot = 0;
+    double shown = 100, readable = 100, action = 100;
+    for (const RunResult* r : rs) {
+      crossings += value(*r, "edit_line_crossings");
+      jumps += value(*r, "edit_jump_cuts");
+      shorts += value(*r, "edit_short_shots");
+      cpm += value(*r, "edit_cuts_per_min") / static_cast<double>(rs.size());
+      shot += value(*r, "edit_mean_shot_s") / static_cast<double>(rs.size());
+      shown = std::min(shown, value(*r, "edit_speaker_shown_pct"));
+      readable = std::min(readable, value(*r, "edit_speaker_readable_pct"));
+      action = std::min(action, value(*r, "edit_action_shown_pct"));
+    }
+    t.rows.push_back({editor, std::to_string(rs.size()), fixed(crossings, 0), fixed(jumps, 0),
+                      fixed(shorts, 0), fixed(cpm, 1), fixed(shot, 2), fixed(shown, 1),
+                      fixed(readable, 1), fixed(action, 1)});
+  }
+  out << t.str() << '\n';
+  Table runs{{"scene", "editor", "seed", "line crossings", "jump cuts", "short shots", "cuts / min",
+              "mean shot s", "speaker shown %", "readable %", "action shown %"},
+             {}};
+  for (const std::string& editor : order) {
+    for (const RunResult* r : by_editor[editor]) {
+      runs.rows.push_back({r->subject, editor, std::to_string(r->seed),
+                           fixed(value(*r, "edit_line_crossings"), 0), fixed(value(*r, "edit_jump_cuts"), 0),
+                           fixed(value(*r, "edit_short_shots"), 0), fixed(value(*r, "edit_cuts_per_min"), 1),
+                           fixed(value(*r, "edit_mean_shot_s"), 2), fixed(value(*r, "edit_speaker_shown_pct"), 1),
+                           fixed(value(*r, "edit_speaker_readable_pct"), 1),
+                           fixed(value(*r, "edit_action_shown_pct"), 1)});
+    }
+  }
+  out << runs.str() << '\n';
+  return out.str();
+}
+
 }  // namespace
 
 std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
@@ -145,6 +202,7 @@ std::string markdown_summary(const Suite& suite, const SuiteOutcome& outcome) {
     }
     out << runs.str() << '\n';
   }
+  out << edited_films_markdown(outcome, columns);
 
   bool any_toy = false;
   Table toy{{"problem", "solver", "seed", "status", "cost", "hard violations", "feasible",

@@ -94,6 +94,18 @@ def test_a_camera_trace_in_numpy_equals_the_programs_csv(tmp_path, binary, sourc
     assert "tracking shot" in run["summary"]
 
 
+def test_a_conversation_is_edited_with_its_shots_and_the_judges_metrics(source_dir):
+    scene = os.path.join(source_dir, "experiments/scenes/conversations/two-standing.yaml")
+    film = sl.follow(scene)
+    assert film["edit"]["edit_line_crossings"] == 0
+    assert film["edit"]["edit_speaker_shown_pct"] >= 90
+    starts = [t for t, _ in film["shots"]]
+    assert starts == sorted(starts) and len(film["shots"]) >= 2
+    assert sum(film["trace"]["cut"]) == len(film["shots"]) - 1
+    greedy = sl.follow(scene, solver="greedy")
+    assert "edited by 'greedy'" in greedy["summary"]
+
+
 def test_a_suite_run_from_python_resumes(tmp_path, source_dir):
     suite = tmp_path / "suite.yaml"
     suite.write_text(

@@ -122,6 +122,14 @@ EditCosts edit_costs(const Scene& scene, const Footage& footage, const EditWeigh
   // A shot's camera jumps when it moves faster than half the film's speed limit on average
   // between two takes: its path through the takes (a Catmull-Rom curve) peaks higher.
   const double max_move = 0.5 * w.max_speed * footage.slot_seconds;
+  for (std::size_t i = 1; i < costs.slots; ++i) {
+    for (std::size_t k = 0; k < costs.shots; ++k) {
+      const Take& now = footage.takes[i][k];
+      const Take& before = footage.takes[i - 1][k];
+      costs.jumps[i][k] = (now.pose.position - before.pose.position).norm() > max_move ||
+                          view_turn_degrees(before.pose, now.pose) > 90;
+    }
+  }
   for (std::size_t i = 0; i < costs.slots; ++i) {
     const double t = footage.slot_times[i];
     world.set_time(t);
@@ -170,21 +178,25 @@ EditCosts edit_costs(const Scene& scene, const Footage& footage, const EditWeigh
         if (a >= 0 && b >= 0) lines.emplace_back(world.people()[a].aim, world.people()[b].aim);
       }
     }
-    for (std::size_t k = 0; k < costs.shots; ++k) {
-      const Take& now = footage.takes[i][k];
-      const Take& before = footage.takes[i - 1][k];
-      costs.jumps[i][k] = (now.pose.position - before.pose.position).norm() > max_move ||
-                          view_turn_degrees(before.pose, now.pose) > 90;
-    }
-    auto cut_price = [&](const Take& from, const Take& to) {
+    // A cut's price. The film's frames around a cut pass between takes: the last frame
+    // before it lies between the old shot's takes `from_before` and `from`, the cut frame
+    // between the new shot's `to` and `to_after` (null: held), so the sides are checked
+    // for each of them.
+    auto cut_price = [&](const Take& from, const Take* from_before, const Take& to, const Take* to_after) {
       double price = w.cut;
       bool crossing = false, near = false;
+      const Take* befores[] = {&from, from_before};
+      const Take* afters[] = {&to, to_after};
       for (const auto& [a, b] : lines) {
-        // Stricter than the rule: opposite signs at all (the film's frames are not the
-        // slots' takes, so a camera a few centimetres from the line may land across it).
-        const double s0 = side_of_line(from.pose.position, a, b), s1 = side_of_line(to.pose.position, a, b);
-        crossing = crossing || crosses_line(from.pose.position, to.pose.position, a, b, rules) || s0 * s1 < 0;
-        near = near || std::abs(s0) < 1.0 / 3 || std::abs(s1) < 1.0 / 3;
+        for (const Take* x : befores) {
+          for (const Take* y : afters) {
+            if (!x || !y) continue;
+            // Stricter than the rule: opposite signs at all.
+            const double s0 = side_of_line(x->pose.position, a, b), s1 = side_of_line(y->pose.position, a, b);
+            crossing = crossing || s0 * s1 < 0 || crosses_line(x->pose.position, y->pose.position, a, b, rules);
+            near = near || std::abs(s0) < 1.0 / 3 || std::abs(s1) < 1.0 / 3;
+          }
+        }
       }
       if (crossing) price += w.crossing;
       if (near) price += w.on_line;
@@ -193,17 +205,19 @@ EditCosts edit_costs(const Scene& scene, const Footage& footage, const EditWeigh
     };
     for (std::size_t a = 0; a < costs.shots; ++a) {
       // A shot whose camera jumped into this slot was last seen at its previous take.
-      const Take& from = costs.jumps[i][a] ? footage.takes[i - 1][a] : footage.takes[i][a];
+      const bool jumped = costs.jumps[i][a];
+      const Take& from = jumped ? footage.takes[i - 1][a] : footage.takes[i][a];
+      const Take* from_before = jumped ? nullptr : &footage.takes[i - 1][a];
       for (std::size_t b = 0; b < costs.shots; ++b) {
+        const Take* to_after = i + 1 < costs.slots && !costs.jumps[i + 1][b] ? &footage.takes[i + 1][b] : nullptr;
         double& price = costs.change[i][a * costs.shots + b];
         if (a == b) {
           // Holding a shot through its camera's jump is a cut the runs do not count: priced
           // as a cut and as a shot cut short, so the edit cuts to another shot instead.
-          price = costs.jumps[i][a]
-                      ? cut_price(footage.takes[i - 1][a], footage.takes[i][a]) + w.short_shot
-                      : 0;
+          price = jumped ? cut_price(footage.takes[i - 1][a], nullptr, footage.takes[i][a], to_after) + w.short_shot
+                         : 0;
         } else {
-          price = cut_price(from, footage.takes[i][b]);
+          price = cut_price(from, from_before, footage.takes[i][b], to_after);
         }
       }
     }
