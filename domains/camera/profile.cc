@@ -91,6 +91,9 @@ std::string CameraProfile::validate() const {
   if (!std::isfinite(a.max_jerk) || a.max_jerk < 0 || a.max_jerk > 1e5) {
     return "anticipation.max_jerk must be in [0, 100000] m/s^3";
   }
+  if (cuts.stuck_per_minute < 0 || cuts.stuck_per_minute > 16) {
+    return "cuts.stuck_per_minute must be in [0, 16] (0: no limit)";
+  }
   if (cuts.cut_ahead &&
       (!cuts.smooth_escape || a.lookahead == Lookahead::kNone || a.plan_seconds <= 0)) {
     return "cuts.cut_ahead needs cuts.smooth_escape: true, anticipation.lookahead motion or "

@@ -168,12 +168,18 @@ CameraProfile parse_onto(const Spec& spec, const std::string& fallback_name, int
     }
   }
   if (const Spec* block = spec.find("cuts")) {
-    block->check_keys({"leave_enclosed", "backing_up", "stuck", "smooth_escape", "cut_ahead"});
+    block->check_keys({"leave_enclosed", "backing_up", "stuck", "smooth_escape", "cut_ahead",
+                       "stuck_per_minute"});
     if (const Spec* v = block->find("leave_enclosed")) p.cuts.leave_enclosed = v->as_bool();
     if (const Spec* v = block->find("backing_up")) p.cuts.backing_up = v->as_bool();
     if (const Spec* v = block->find("stuck")) p.cuts.stuck = v->as_bool();
     if (const Spec* v = block->find("smooth_escape")) p.cuts.smooth_escape = v->as_bool();
     if (const Spec* v = block->find("cut_ahead")) p.cuts.cut_ahead = v->as_bool();
+    if (const Spec* v = block->find("stuck_per_minute")) {
+      const long long n = v->as_integer("a whole number of cuts in [0, 16]");
+      if (n < 0 || n > 16) v->fail("expected stuck_per_minute in [0, 16] (0: no limit), got " + std::to_string(n));
+      p.cuts.stuck_per_minute = static_cast<int>(n);
+    }
   }
   if (const Spec* extras = spec.find("extras")) {
     for (const Spec& entry : extras->items("a list of constraint entries for 'extras'")) {

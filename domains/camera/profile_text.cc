@@ -107,7 +107,10 @@ std::string profile_text(const CameraProfile& p) {
       << number(a.plan_seconds) << "," << number(a.max_jerk) << "\n";
   const CutPolicy& c = p.cuts;
   out << "cuts=" << flag(c.leave_enclosed) << "," << flag(c.backing_up) << "," << flag(c.stuck)
-      << "," << flag(c.smooth_escape) << "," << flag(c.cut_ahead) << "\n";
+      << "," << flag(c.smooth_escape) << "," << flag(c.cut_ahead);
+  // Only when set, so profiles without a limit keep their text (and suites their runs).
+  if (c.stuck_per_minute > 0) out << "," << c.stuck_per_minute;
+  out << "\n";
   out << "extras=[";
   for (const csp::Spec& extra : p.extras) {
     write_spec(extra, out);

@@ -69,6 +69,8 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
 
   int visible_frames = 0, current_occlusion = 0;
   double fraction_sum = 0;
+  int body_half_frames = 0;
+  std::vector<double> cut_times, beyond_rules;  // when the cuts came, all and beyond the thesis rules
   m.visible_fraction_min = 1;
   m.min_clearance = std::numeric_limits<double>::infinity();
   double height_sum = 0, distance_sum = 0, orientation_sum = 0, cost_sum = 0;
@@ -99,6 +101,7 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
     }
     const double fraction = world.body_fraction(r.camera, r.character);
     fraction_sum += fraction;
+    if (fraction >= 0.5) ++body_half_frames;
     m.visible_fraction_min = std::min(m.visible_fraction_min, fraction);
     const double clearance = world.distance(r.camera);
     if (input.solid_at && input.solid_at(r.camera)) ++m.solid_frames;
@@ -124,6 +127,12 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
     solve_us.push_back(r.solve_us);
     if (r.cut_reason.empty()) m.cut_reasons_known = false;
     if (r.cut) {
+      if (!cut_times.empty() && r.t - cut_times.back() < 1.0 - 1e-9) ++m.cuts_within_1s;
+      cut_times.push_back(r.t);
+      // The thesis' rules' cuts (leaving an enclosed area, backing up) are the profile's own.
+      if (r.cut_reason != "left-enclosed-area" && r.cut_reason != "backed-up-to-obstacle") {
+        beyond_rules.push_back(r.t);
+      }
       ++m.cuts;
       if (r.cut_reason == kForcedCutReason) ++m.forced_cuts;
       else ++m.discretionary_cuts;
@@ -145,6 +154,11 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
   const double n = static_cast<double>(trace.size());
   m.visible_percent = 100.0 * visible_frames / n;
   m.visible_fraction_mean = fraction_sum / n;
+  m.body_half_visible_percent = 100.0 * body_half_frames / n;
+  for (std::size_t i = 0, j = 0; i < beyond_rules.size(); ++i) {
+    while (beyond_rules[i] - beyond_rules[j] >= 60.0) ++j;
+    m.cuts_beyond_rules_per_60s_max = std::max(m.cuts_beyond_rules_per_60s_max, static_cast<int>(i - j + 1));
+  }
   m.height_deviation_mean = height_sum / n;
   m.distance_deviation_mean = distance_sum / n;
   m.orientation_deviation_mean = orientation_sum / n;
@@ -202,7 +216,8 @@ std::vector<std::string> metric_names() {
           "cost_max",         "solve_us_p50",       "solve_us_p99",
           "solve_us_max",     "solid_frames",       "cuts_per_minute",
           "forced_cuts",      "discretionary_cuts", "discretionary_cuts_per_minute",
-          "recovery_s_max",   "recovery_s_mean",    "duration_s"};
+          "recovery_s_max",   "recovery_s_mean",    "duration_s",
+          "body_half_visible_pct", "cuts_within_1s", "cuts_beyond_rules_60s_max"};
 }
 
 std::vector<double> metric_values(const RunMetrics& m) {
@@ -220,7 +235,9 @@ std::vector<double> metric_values(const RunMetrics& m) {
           m.cut_reasons_known ? static_cast<double>(m.forced_cuts) : kUnknown,
           m.cut_reasons_known ? static_cast<double>(m.discretionary_cuts) : kUnknown,
           m.cut_reasons_known ? m.discretionary_cuts_per_minute : kUnknown,
-          m.recovery_seconds_max, m.recovery_seconds_mean, m.duration_seconds};
+          m.recovery_seconds_max, m.recovery_seconds_mean, m.duration_seconds,
+          m.body_half_visible_percent, static_cast<double>(m.cuts_within_1s),
+          static_cast<double>(m.cuts_beyond_rules_per_60s_max)};
 }
 
 }  // namespace sightline::experiments

@@ -42,6 +42,7 @@ struct RunMetrics {
   double visible_percent = 0;        // frames whose look-at point is visible, in %
   double visible_fraction_mean = 0;  // of the body, 0..1
   double visible_fraction_min = 0;
+  double body_half_visible_percent = 0;  // frames with at least half the body visible, %
   int occlusion_episodes = 0;        // maximal runs of frames with the look-at hidden
   int longest_occlusion_frames = 0;
   int clearance_violations = 0;      // frames with the camera inside or within its radius
@@ -58,6 +59,10 @@ struct RunMetrics {
   int discretionary_cuts = 0;
   double discretionary_cuts_per_minute = 0;
   double shortest_shot_seconds = 0;  // between cuts (the start counts; the open last shot not)
+  int cuts_within_1s = 0;            // cuts less than 1 s after the one before
+  // The most cuts in any 60 s beyond those the thesis' rules call for (leaving an enclosed
+  // area, backing up to an obstacle): issue 24's bound is 2.
+  int cuts_beyond_rules_per_60s_max = 0;
   // Moves above max_smooth_step without a cut flag: the "pops" of issue 13 (one figure, one
   // name in results.csv).
   int unflagged_jumps = 0;

@@ -114,8 +114,14 @@ std::string family_scene_name(const char* family, std::uint64_t seed) {
 camera::Scene finish(std::string name, std::string description, std::vector<camera::SolidBox> boxes,
                      const std::vector<Vector3d>& path, double speed,
                      std::vector<camera::Mover> movers) {
+  return finish(std::move(name), std::move(description), std::move(boxes), walk(path, speed),
+                std::move(movers));
+}
+
+camera::Scene finish(std::string name, std::string description, std::vector<camera::SolidBox> boxes,
+                     camera::Trajectory trajectory, std::vector<camera::Mover> movers) {
   camera::Scene scene(std::move(name), std::move(boxes), {}, camera::CharacterShape{},
-                      walk(path, speed), 60);
+                      std::move(trajectory), 60);
   scene.set_description(std::move(description));
   scene.set_movers(std::move(movers));
   for (std::size_t f = 0; f < scene.frame_count(); ++f) {

@@ -72,4 +72,9 @@ camera::Scene finish(std::string name, std::string description, std::vector<came
                      const std::vector<Eigen::Vector3d>& path, double speed,
                      std::vector<camera::Mover> movers = {});
 
+// The same for a trajectory made by hand (facing and timing of the generator's choosing:
+// strafing, backing up, falling).
+camera::Scene finish(std::string name, std::string description, std::vector<camera::SolidBox> boxes,
+                     camera::Trajectory trajectory, std::vector<camera::Mover> movers = {});
+
 }  // namespace sightline::experiments::scene_building

@@ -9,6 +9,7 @@
 #include "sightline/domains/camera/profile_text.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/file_globs.h"
+#include "sightline/experiments/sources/agile_families.h"
 #include "sightline/experiments/sources/conversation_generator.h"
 #include "sightline/experiments/sources/scene_families.h"
 #include "sightline/experiments/sources/scene_generator.h"
@@ -96,6 +97,11 @@ void add_builtin_sources(SceneSources& sources) {
                        o.seed = seed;
                        return generate_crossings(o);
                      }));
+  for (const AgileFamily family : all_agile_families()) {
+    sources.add(seeded_source(to_string(family), "the seeded agile family " + to_string(family) +
+                                                     " (experiments/sources/agile_families.h)",
+                              [family](std::uint64_t seed) { return generate_agile(family, seed); }));
+  }
   sources.add(seeded_source("conversation",
                             "two or three people talking (standing, walking, circling, one "
                             "coming in), with a script: edited, not chased",

@@ -72,6 +72,7 @@ void ChaseCamera::reset(const Eigen::Vector3d& position) {
   set_filtered_target(position);
   since_cut_ = 1e9;
   stuck_for_ = 0;
+  stuck_cuts_ = 0;
   frame_.position = position;
 }
 
@@ -457,13 +458,30 @@ void ChaseCamera::check_left_behind(const FrameContext& frame, Eigen::Vector3d& 
   // Left behind for longer than the plan looks ahead: no plan will bring it back.
   const double patience =
       std::max(options_.stuck_seconds, problem_.profile().anticipation.horizon);
-  if (problem_.profile().cuts.stuck && stuck_for_ >= patience && frame.may_cut) {
+  if (problem_.profile().cuts.stuck && stuck_for_ >= patience && frame.may_cut &&
+      stuck_cut_allowed(frame.character.t)) {
     const Eigen::Vector3d shot = solve_for_new_shot(frame.character, frame.dt, frame.look);
     if (usable(shot, frame.look) && (shot - position_).norm() > max_step(frame.dt)) {
       target = shot;
       cut_to(shot, CutReason::kStuck);
+      note_stuck_cut(frame.character.t);
     }
   }
+}
+
+// cuts.stuck_per_minute: fewer stuck cuts than the limit in the last 60 s.
+bool ChaseCamera::stuck_cut_allowed(double t) const {
+  const int limit = problem_.profile().cuts.stuck_per_minute;
+  if (limit <= 0) return true;
+  const std::size_t kept = std::min<std::size_t>(stuck_cuts_, stuck_cut_times_.size());
+  int recent = 0;
+  for (std::size_t i = 0; i < kept; ++i) recent += t - stuck_cut_times_[i] < 60.0 ? 1 : 0;
+  return recent < limit;
+}
+
+void ChaseCamera::note_stuck_cut(double t) {
+  stuck_cut_times_[stuck_cuts_ % stuck_cut_times_.size()] = t;
+  ++stuck_cuts_;
 }
 
 // Blocked but still seeing the character: stay, and cut to the target when stuck for
@@ -473,8 +491,10 @@ void ChaseCamera::stay(const FrameContext& frame, const Eigen::Vector3d& target)
   set_filtered_target(position_);
   stuck_for_ += frame.dt;
   if (problem_.profile().cuts.stuck && stuck_for_ >= options_.stuck_seconds && frame.may_cut &&
-      usable(target, frame.look) && (target - position_).norm() > max_step(frame.dt)) {
+      stuck_cut_allowed(frame.character.t) && usable(target, frame.look) &&
+      (target - position_).norm() > max_step(frame.dt)) {
     cut_to(target, CutReason::kStuck);
+    note_stuck_cut(frame.character.t);
   }
 }
 

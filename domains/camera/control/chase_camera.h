@@ -188,6 +188,11 @@ class ChaseCamera : public CameraController {
   std::array<Eigen::Vector3d, ChaseCameraOptions::kMaxSmoothingStages> filtered_target_{};
   void set_filtered_target(const Eigen::Vector3d& p) { filtered_target_.fill(p); }
   double since_cut_ = 1e9;  // seconds since the last cut
+  // The times of the last stuck cuts (a ring), for the profile's cuts.stuck_per_minute.
+  std::array<double, 16> stuck_cut_times_{};
+  std::size_t stuck_cuts_ = 0;  // how many were made (the ring holds the last 16)
+  bool stuck_cut_allowed(double t) const;
+  void note_stuck_cut(double t);
   double stuck_for_ = 0;    // seconds the smooth move has been blocked
   // With the planner: the camera's distance from the ideal position last frame.
   double last_off_ideal_ = 1e9;

@@ -209,6 +209,8 @@ TEST(CameraProblem, AddsFutureVisibilityOnlyWhenTheProfileLooksAhead) {
   EXPECT_GT(anticipating.anticipation.max_jerk, 0);      // its changes of acceleration bounded
   EXPECT_TRUE(anticipating.cuts.cut_ahead);  // shut out by a mover: one forced cut, no escapes
   EXPECT_TRUE(preset_profile("anticipating-path").cuts.cut_ahead);
+  EXPECT_EQ(anticipating.cuts.stuck_per_minute, 2);  // no more than 2 stuck cuts a minute
+  EXPECT_EQ(preset_profile("thesis").cuts.stuck_per_minute, 0);  // the thesis: no limit
   CameraProblem cp(scene, anticipating);
   ASSERT_TRUE(cp.ids().future_visible.has_value());
   const csp::Constraint& c = cp.problem().constraint(*cp.ids().future_visible);
@@ -323,6 +325,8 @@ TEST(CameraProfile, BadAnticipationValuesNameTheLineAndWhatWasExpected) {
       {"name: x\nanticipation:\n  wieght: 1\n", "wieght"},
       {"name: x\ncuts:\n  stuck: maybe\n", ""},
       {"name: x\ncuts:\n  cut_ahead: soon\n", "profile.yaml:3"},
+      {"name: x\ncuts:\n  stuck_per_minute: 17\n", "stuck_per_minute in [0, 16]"},
+      {"name: x\ncuts:\n  stuck_per_minute: 1.5\n", "profile.yaml:3"},
       // cut_ahead acts only where the planner's escapes would: refused without them.
       {"name: x\ncuts: {smooth_escape: true, cut_ahead: true}\n", "cuts.cut_ahead needs"},
       {"name: x\nanticipation: {lookahead: motion}\ncuts: {cut_ahead: true}\n",
