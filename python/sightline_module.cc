@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "apps/problem_loader.h"
@@ -87,6 +88,8 @@ struct PyResult {
   double wall_seconds = 0, best_found_seconds = -1;
   std::uint64_t evaluations = 0, iterations = 0, evaluations_at_best = 0;
   std::vector<std::pair<std::string, double>> breakdown;
+  // The anytime trajectory: (seconds, evaluations, cost, hard) at each improvement.
+  std::vector<std::tuple<double, std::uint64_t, double, double>> trajectory;
   // By variable name; a value's label where the problem file gives labels.
   py::dict assignment() const {
     py::dict d;
@@ -118,6 +121,7 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
   }
   solvers::SolveContext context;
   context.seed = seed;
+  context.want_trajectory = true;
   if (time_limit) {
     if (!(*time_limit > 0)) throw std::invalid_argument("time_limit must be > 0 seconds");
     context.limits.time_limit_seconds = *time_limit;
@@ -149,6 +153,9 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
   out.evaluations = r.evaluations;
   out.iterations = r.iterations;
   out.evaluations_at_best = r.evaluations_at_best;
+  for (const solvers::AnytimePoint& a : r.trajectory) {
+    out.trajectory.emplace_back(a.seconds, a.evaluations, a.score.soft, a.score.hard);
+  }
   for (const csp::ConstraintCost& c : r.breakdown) {
     // Named by its label, else by its kind over its variables' names: "not_equal(a, b)".
     const std::string name = p.problem->constraint_name(c.id);
@@ -346,6 +353,9 @@ PYBIND11_MODULE(_sightline, m) {
       .def_readonly("evaluations_at_best", &PyResult::evaluations_at_best)
       .def_readonly("iterations", &PyResult::iterations)
       .def_readonly("breakdown", &PyResult::breakdown, "(constraint, cost) pairs")
+      .def_readonly("trajectory", &PyResult::trajectory,
+                    "the anytime trajectory: (seconds, evaluations, cost, hard) at each improvement "
+                    "of the best, in order; the last is the result")
       .def("__repr__", [](const PyResult& r) {
         return "<sightline.Result " + r.solver + ": cost " + std::to_string(r.cost) +
                (r.feasible ? ", feasible" : ", infeasible") + ", stop: " + r.stop + ">";

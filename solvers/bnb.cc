@@ -44,7 +44,7 @@ std::string BranchAndBoundSolver::unsuitable_reason(const csp::Problem& problem)
 
 void BranchAndBoundSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                                       const SolveContext& context, SolverResult& result) {
-  Budget budget(context.limits, 1);  // a branch costs far more than reading the clock
+  Budget budget(context, 1);  // a branch costs far more than reading the clock
   // The start may alias result.best; the search copies it before writing the result.
   const csp::Assignment start_copy(start.begin(), start.end());
   problem.check_assignment(start_copy);

@@ -166,7 +166,7 @@ std::string CeresRefineSolver::unsuitable_reason(const csp::Problem& problem) co
 
 void CeresRefineSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                                    const SolveContext& context, SolverResult& result) {
-  Budget budget(context.limits, 1);
+  Budget budget(context, 1);
   max_evaluations_ = context.limits.max_evaluations;
   result.evaluations = 0;
   result.iterations = 0;

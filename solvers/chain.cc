@@ -110,7 +110,7 @@ void ChainSolver::solve_into(const csp::Problem& problem, std::span<const double
                              const SolveContext& context, SolverResult& result) {
   const std::string why = unsuitable_reason(problem);
   if (!why.empty()) throw std::invalid_argument("chain: " + why);
-  Budget budget(context.limits);
+  Budget budget(context);
   const ChainShape shape = shape_of(problem);
   const std::size_t n = problem.num_variables();
   const std::size_t cap = shape.cap;
@@ -220,7 +220,7 @@ void ChainSolver::solve_into(const csp::Problem& problem, std::span<const double
     result.best[i] = value(i, state / cap);
     state = from[i][state];
   }
-  budget.note_best(result.evaluations);
+  budget.note_best(result.evaluations, 0, &top);
   result.stop = StopReason::kProvenOptimal;
   finish_result(problem, context, budget, result);
 }

@@ -82,7 +82,7 @@ void GridSolver::solve_into(const csp::Problem& problem, std::span<const double>
     throw GridTooLarge("grid on '" + problem.name() + "': " + why);
   }
   (void)start;
-  Budget budget(context.limits, 1024);
+  Budget budget(context, 1024);
   const std::size_t n = problem.num_variables();
   sizes_.resize(n);
   digits_.assign(n, 0);
@@ -124,6 +124,7 @@ void GridSolver::solve_into(const csp::Problem& problem, std::span<const double>
       best = exact;
       at_best = 1;
       result.best = evaluator.values();
+      budget.note_best(visited, 0, &best);
     } else if (!best.better_than(exact)) {
       ++at_best;
     }

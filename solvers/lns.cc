@@ -130,7 +130,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   }
   // Created here, not in the constructor: the registry may still be being built then.
   if (!bnb_) bnb_ = SolverRegistry::global().create("bnb");
-  Budget budget(context.limits, 1);  // a step costs far more than reading the clock
+  Budget budget(context, 1);  // a step costs far more than reading the clock
   const SolveLimits& limits = context.limits;
   const bool unlimited =
       limits.max_evaluations == 0 && limits.max_iterations == 0 && !(limits.time_limit_seconds > 0);
@@ -192,7 +192,8 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     if (r.score.better_than(evaluator.score())) {
       for (csp::VariableId v = 0; v < n; ++v) evaluator.assign(v, r.best[v]);
       best_seconds = budget.elapsed_seconds();
-      budget.record_best(evaluations, best_seconds);
+      const csp::Score now = evaluator.score();
+      budget.record_best(evaluations, best_seconds, &now);
     }
   }
 
@@ -247,7 +248,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
       best = evaluator.values();
       best_score = evaluator.score();
       best_seconds = budget.elapsed_seconds();
-      budget.record_best(evaluations, best_seconds);
+      budget.record_best(evaluations, best_seconds, &best_score);
       ++improvements;
     }
     if (evaluator.score().better_than(before)) {

@@ -20,7 +20,7 @@ std::size_t Pipeline::alternatives_wanted() const {
 
 void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> start,
                           const SolveContext& context, SolverResult& result) {
-  Budget budget(context.limits, 1);
+  Budget budget(context, 1);
   result.best.assign(start.begin(), start.end());
   result.score = problem.score(result.best);
   result.evaluations = 1;
@@ -28,7 +28,7 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
   result.stop = StopReason::kCompleted;
   result.message.clear();
   result.alternatives.clear();
-  budget.note_best(result.evaluations);
+  budget.note_best(result.evaluations, 0, &result.score);
   SolveContext stage_context = context;
   stage_context.want_breakdown = false;
   handed_over_.clear();
@@ -63,6 +63,13 @@ void Pipeline::solve_into(const csp::Problem& problem, std::span<const double> s
     if (last) result.alternatives = handed_over_;
     result.evaluations += stage_result_.evaluations;
     result.iterations += stage_result_.iterations;
+    // The stage's improvements on the pipeline's best, on the pipeline's clock.
+    csp::Score so_far = result.score;
+    for (const AnytimePoint& p : stage_result_.trajectory) {
+      if (!p.score.better_than(so_far)) continue;
+      so_far = p.score;
+      budget.record_best(evaluations_before + p.evaluations, stage_began + p.seconds, &p.score);
+    }
     if (stage_result_.score.better_than(result.score)) {
       result.best = stage_result_.best;
       result.score = stage_result_.score;

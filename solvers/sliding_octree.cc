@@ -61,7 +61,7 @@ void SlidingOctreeSolver::solve_into(const csp::Problem& problem, std::span<cons
   if (std::string why = unsuitable_reason(problem); !why.empty()) {
     throw std::invalid_argument("sliding-octree on '" + problem.name() + "': " + why);
   }
-  Budget budget(context.limits, 1);
+  Budget budget(context, 1);
   const std::size_t d = problem.num_variables();
   detail::prepare_start(problem, start, centre_);
   size_.resize(d);

@@ -83,7 +83,7 @@ std::uint64_t SlsSolver::restart_cap(const SolveContext& context) const {
 
 void SlsSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                            const SolveContext& context, SolverResult& result) {
-  Budget budget(context.limits, 256);
+  Budget budget(context, 256);
   result.solutions_at_best = 0;
   const std::uint64_t cap = restart_cap(context);
   std::optional<FullEvaluation> evaluated;

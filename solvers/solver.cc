@@ -44,6 +44,10 @@ Budget::Budget(const SolveLimits& limits, unsigned clock_stride)
     : limits_(limits), clock_stride_(clock_stride ? clock_stride : 1),
       start_(std::chrono::steady_clock::now()) {}
 
+Budget::Budget(const SolveContext& context, unsigned clock_stride) : Budget(context.limits, clock_stride) {
+  keep_trajectory_ = context.want_trajectory;
+}
+
 bool Budget::exhausted(std::uint64_t evaluations, std::uint64_t iterations) {
   if (limits_.max_evaluations && evaluations >= limits_.max_evaluations) {
     reason_ = StopReason::kEvaluationLimit;
@@ -72,16 +76,23 @@ double Budget::read_clock(std::uint64_t evaluations) {
   return last_reading_;
 }
 
-void Budget::note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations) {
+void Budget::note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations,
+                       const csp::Score* score) {
   const bool fresh_enough = read_once_ && evaluations >= last_reading_evaluations_ &&
                             evaluations - last_reading_evaluations_ <= stale_evaluations;
   record_best(evaluations, fresh_enough && stale_evaluations > 0 ? last_reading_
-                                                                  : read_clock(evaluations));
+                                                                  : read_clock(evaluations),
+              score);
 }
 
-void Budget::record_best(std::uint64_t evaluations, double seconds) {
+void Budget::record_best(std::uint64_t evaluations, double seconds, const csp::Score* score) {
   best_seconds_ = seconds;
   best_evaluations_ = evaluations;
+  if (keep_trajectory_ && score != nullptr) {
+    // Improvements a reused clock reading puts at the same time keep only the last.
+    if (!trajectory_.empty() && trajectory_.back().seconds == seconds) trajectory_.pop_back();
+    trajectory_.push_back({seconds, evaluations, *score});
+  }
 }
 
 FullEvaluation evaluate_fully(const csp::Problem& problem, std::span<const double> values,
@@ -112,6 +123,19 @@ void finish_result(const csp::Problem& problem, const SolveContext& context,
   result.wall_seconds = budget.elapsed_seconds();
   result.best_found_seconds = budget.best_found_seconds();
   result.evaluations_at_best = budget.best_found_seconds() >= 0 ? budget.evaluations_at_best() : 0;
+  result.trajectory.clear();
+  if (context.want_trajectory) {
+    // What the solver noted, then the result itself unless that was the last point noted.
+    result.trajectory = budget.trajectory();
+    const auto& last = result.trajectory;
+    if (last.empty() || result.score.better_than(last.back().score) ||
+        last.back().score.better_than(result.score)) {
+      const bool known = result.best_found_seconds >= 0;
+      result.trajectory.push_back({known ? result.best_found_seconds : result.wall_seconds,
+                                   known ? result.evaluations_at_best : result.evaluations,
+                                   result.score});
+    }
+  }
 }
 
 }  // namespace sightline::solvers

@@ -48,6 +48,9 @@ struct SolveContext {
   // run that default course within the pipeline's limits, and the last stage gets what is
   // left (`sls>bnb` under a time limit is sls's default run, then bnb for the rest).
   bool anytime = true;
+  // Keep the anytime trajectory (SolverResult::trajectory): every improvement of the best
+  // with its time. Off by default: a camera's frame keeps nothing.
+  bool want_trajectory = false;
 
   // True when an anytime solver should run until a limit stops it.
   bool runs_to_the_limit() const { return anytime && limits.any(); }
@@ -62,6 +65,14 @@ enum class StopReason {
   kTimeLimit,
 };
 const char* to_string(StopReason reason);
+
+// One improvement of a solver's best: when (seconds since the solve began, evaluations by
+// then) and its score.
+struct AnytimePoint {
+  double seconds = 0;
+  std::uint64_t evaluations = 0;
+  csp::Score score;
+};
 
 struct SolverResult {
   csp::Assignment best;                        // best assignment found
@@ -84,6 +95,10 @@ struct SolverResult {
   // (time to best, for anytime solvers). -1 and 0 when the solver does not record it.
   double best_found_seconds = -1;
   std::uint64_t evaluations_at_best = 0;
+  // With SolveContext::want_trajectory: the best score over time, one point per improvement
+  // the solver reports (in order; the last is the result's own score), so anytime curves can
+  // be drawn. Solvers that report none give one point, the end.
+  std::vector<AnytimePoint> trajectory;
   StopReason stop = StopReason::kCompleted;
   std::string message;  // solver-specific detail, may be empty
 
@@ -116,6 +131,8 @@ class Solver {
 class Budget {
  public:
   explicit Budget(const SolveLimits& limits, unsigned clock_stride = 64);
+  // The same, keeping the anytime trajectory when the context asks for it.
+  explicit Budget(const SolveContext& context, unsigned clock_stride = 64);
   // True once any limit is reached; `reason()` then says which.
   bool exhausted(std::uint64_t evaluations, std::uint64_t iterations);
   StopReason reason() const { return reason_; }
@@ -125,9 +142,13 @@ class Budget {
   // copied into the result by finish_result). Reading the clock at every improvement would
   // cost a local search that improves 10^5 times a second, so the last reading is reused
   // when it was taken at most `stale_evaluations` evaluations ago (0: always read it).
-  void note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations = 0);
+  // `score`, when given, is the new best's, for the anytime trajectory.
+  void note_best(std::uint64_t evaluations, std::uint64_t stale_evaluations = 0,
+                 const csp::Score* score = nullptr);
   // The same at a known time (a pipeline passing on a stage's own record).
-  void record_best(std::uint64_t evaluations, double seconds);
+  void record_best(std::uint64_t evaluations, double seconds, const csp::Score* score = nullptr);
+  // The improvements noted with a score, when the context asked for the trajectory.
+  const std::vector<AnytimePoint>& trajectory() const { return trajectory_; }
   double best_found_seconds() const { return best_seconds_; }          // -1 if never noted
   std::uint64_t evaluations_at_best() const { return best_evaluations_; }
 
@@ -144,6 +165,8 @@ class Budget {
   bool read_once_ = false;
   double best_seconds_ = -1;
   std::uint64_t best_evaluations_ = 0;
+  bool keep_trajectory_ = false;
+  std::vector<AnytimePoint> trajectory_;
 };
 
 // One from-scratch evaluation of an assignment, constraint by constraint: its score and, when

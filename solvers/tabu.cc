@@ -107,7 +107,7 @@ void TabuSolver::solve_into(const csp::Problem& problem, std::span<const double>
       total_work / static_cast<double>(std::max<std::size_t>(1, problem.num_variables()));
   const auto stride =
       static_cast<unsigned>(std::clamp(2048.0 / std::max(1.0, move_work), 1.0, 64.0));
-  Budget budget(context.limits, stride);
+  Budget budget(context, stride);
   result.solutions_at_best = 0;
   const SolveLimits& l = context.limits;
   const bool unlimited =

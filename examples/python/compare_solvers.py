@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Compare sightline's solvers on a few instances, cost against time budget, as a plot.
+"""Compare sightline's solvers on a few instances: their anytime curves, as a plot.
 
-Each solver is given each time budget (10 ms to 1 s) on each instance, from the same start
-and seed; the plot has one panel per instance, the best cost found within each budget per
-solver (a solver's anytime curve sampled at those budgets), and the time it found it at.
+Each solver runs once per instance with a time limit (1 s by default), from the same start
+and seed, keeping its anytime trajectory (Result.trajectory: the best cost each time it
+improved); the plot has one panel per instance and one step curve per solver, best feasible
+cost against time (log scale).
 
     PYTHONPATH=build/python python3 examples/python/compare_solvers.py \
-        [--out solvers.png] [INSTANCE ...]
+        [--out solvers.png] [--time-limit 1] [INSTANCE ...]
 
 Default instances: two of toulbar2's (../shared/data/wcsp) and a colouring graph.
 """
@@ -28,7 +29,6 @@ DEFAULT = [
     (os.path.join(ROOT, "..", "shared", "data", "wcsp", "celar7sub0.wcsp.gz"), 0),
     (os.path.join(ROOT, "examples", "graphs", "myciel5.col"), 5),
 ]
-BUDGETS = [0.01, 0.03, 0.1, 0.3, 1.0]
 SOLVERS = ["sls", "tabu", "lns", "bnb", "sls>bnb"]
 
 
@@ -37,6 +37,7 @@ def main():
     parser.add_argument("instances", nargs="*", help="problem files (.yaml, .wcsp, .cfn)")
     parser.add_argument("--out", default="solvers.png", help="the PNG to write")
     parser.add_argument("--solvers", default=",".join(SOLVERS))
+    parser.add_argument("--time-limit", type=float, default=1.0, help="seconds per solver")
     args = parser.parse_args()
     instances = [(path, 0) for path in args.instances] or [d for d in DEFAULT if os.path.exists(d[0])]
     solvers = args.solvers.split(",")
@@ -46,21 +47,22 @@ def main():
         print(f"{os.path.basename(path)}: {len(problem.variables)} variables, "
               f"{problem.num_constraints} constraints")
         for name in solvers:
-            costs = []
-            for budget in BUDGETS:
-                try:
-                    r = sl.solve(problem, name, time_limit=budget, seed=1)
-                except ValueError as e:  # the solver does not take this problem
-                    print(f"  {name}: {e}")
-                    break
-                costs.append(r.cost if r.feasible else float("nan"))
-                print(f"  {name:8s} {budget:6.2f} s: cost {r.cost:g}"
-                      f"{'' if r.feasible else ' (infeasible)'}, best at {r.best_found_seconds:.3f} s, "
-                      f"stop: {r.stop}")
-            if costs:
-                ax.plot(BUDGETS[:len(costs)], costs, marker="o", label=name)
+            try:
+                r = sl.solve(problem, name, time_limit=args.time_limit, seed=1)
+            except ValueError as e:  # the solver does not take this problem
+                print(f"  {name}: {e}")
+                continue
+            # (seconds, evaluations, cost, hard) at each improvement; feasible ones plotted.
+            points = [(t, cost) for t, _, cost, hard in r.trajectory if hard <= 0]
+            print(f"  {name:8s} cost {r.cost:g}{'' if r.feasible else ' (infeasible)'}, "
+                  f"{len(r.trajectory)} improvements, best at {r.best_found_seconds:.4f} s, "
+                  f"stop: {r.stop}")
+            if points:
+                times = [max(t, 1e-6) for t, _ in points] + [max(r.wall_seconds, points[-1][0])]
+                costs = [c for _, c in points] + [points[-1][1]]
+                ax.step(times, costs, where="post", label=name)
         ax.set_xscale("log")
-        ax.set_xlabel("time budget (s)")
+        ax.set_xlabel("time (s)")
         ax.set_ylabel("best cost (feasible)")
         ax.set_title(os.path.basename(path))
         ax.legend()

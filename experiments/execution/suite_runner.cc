@@ -120,7 +120,35 @@ void execute_camera(const Suite& suite, const SuiteRun& run, const std::string& 
   r.status = "ok";
 }
 
-void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
+// The best cost at `fraction` of the time limit from an anytime trajectory ("" without a
+// limit, or before the first feasible point).
+std::string cost_at(const solvers::SolverResult& result, double limit, double fraction) {
+  if (!(limit > 0)) return "";
+  std::string cost;
+  for (const solvers::AnytimePoint& p : result.trajectory) {
+    if (p.seconds > fraction * limit) break;
+    if (p.score.feasible()) cost = number_text(p.score.soft);
+  }
+  return cost;
+}
+
+// The anytime trajectory as CSV (seconds,evaluations,cost,hard), beside the run's result.
+void write_anytime_csv(const std::string& path, const solvers::SolverResult& result) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << "seconds,evaluations,cost,hard\n";
+    for (const solvers::AnytimePoint& p : result.trajectory) {
+      out << number_text(p.seconds) << ',' << p.evaluations << ',' << number_text(p.score.soft) << ','
+          << number_text(p.score.hard) << '\n';
+    }
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& anytime_path,
+                 RunResult& r) {
   const LoadedSuiteProblem loaded = load_suite_problem(suite.problems[run.subject]);
   const SuiteToySolver& entry = suite.toy_solvers[run.solver];
   const std::unique_ptr<solvers::Solver> solver =
@@ -134,6 +162,7 @@ void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
   context.seed = run.seed;
   context.limits = suite.toy_limits;
   context.want_breakdown = false;
+  context.want_trajectory = true;
   const solvers::SolverResult result =
       solver->solve(*loaded.problem, loaded.problem->default_assignment(), context);
   const long long broken =
@@ -153,8 +182,13 @@ void execute_toy(const Suite& suite, const SuiteRun& run, RunResult& r) {
                                                : std::string(),
                                            result.best_found_seconds >= 0
                                                ? std::to_string(result.evaluations_at_best)
-                                               : std::string()};
+                                               : std::string(),
+                                           // The best cost at checkpoints of the time limit.
+                                           cost_at(result, suite.toy_limits.time_limit_seconds, 0.01),
+                                           cost_at(result, suite.toy_limits.time_limit_seconds, 0.1),
+                                           cost_at(result, suite.toy_limits.time_limit_seconds, 0.5)};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
+  if (!anytime_path.empty()) write_anytime_csv(anytime_path, result);
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
   if (const std::string why =
@@ -233,7 +267,15 @@ RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string
     if (run.kind == SuiteRun::Kind::kCamera) {
       execute_camera(suite, run, trace_path, r);
     } else {
-      execute_toy(suite, run, r);
+      // The trajectory beside the trace's place: runs/<id>.anytime.csv.
+      std::string anytime = trace_path;
+      const std::string suffix = ".trace.csv";
+      if (anytime.size() > suffix.size() && anytime.ends_with(suffix)) {
+        anytime.replace(anytime.size() - suffix.size(), suffix.size(), ".anytime.csv");
+      } else {
+        anytime.clear();
+      }
+      execute_toy(suite, run, anytime, r);
     }
   } catch (const std::bad_alloc&) {
     r.status = "memout";

@@ -237,8 +237,11 @@ std::string report_html(const Suite& suite, const SuiteOutcome& outcome,
   }
   out << "</head><body>";
   out << "<h1>sightline: suite <code>" << html_escape(suite.name) << "</code></h1>";
+  // Figures first (anytime curves and final costs, cactus plot, performance profile), then
+  // the tables.
+  out << anytime_report_section(suite, outcome, out_dir);
+  out << statistics_report_section(suite, outcome);
   out << markdown_to_html(markdown_summary(suite, outcome));
-  out << statistics_report_section(suite, outcome);  // cactus plot, performance profile
 
   // Colours by solver label, stable across scenes.
   std::map<std::string, std::string> colour;

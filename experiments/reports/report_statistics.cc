@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
 #include <functional>
 #include <sstream>
 #include <utility>
@@ -71,6 +75,9 @@ struct Axis {
 struct Series {
   std::string label;
   std::vector<std::pair<double, double>> points;  // data coordinates
+  // An optional band around the line (the interquartile range): the lower edge, then the
+  // upper edge, each at the line's x values; drawn translucent under it.
+  std::vector<double> band_lo, band_hi;
 };
 
 // A framed plot: title, axes with ticks and labels, one polyline per series, a legend on the
@@ -112,6 +119,15 @@ std::string chart_svg(const std::string& title, const Axis& x, const std::string
       << "</text>";
   for (std::size_t s = 0; s < series.size(); ++s) {
     const char* colour = kPalette[s % (sizeof kPalette / sizeof *kPalette)];
+    const Series& line = series[s];
+    if (!line.band_lo.empty() && line.band_lo.size() == line.points.size()) {
+      out << "<polygon fill='" << colour << "' fill-opacity='0.15' stroke='none' points='";
+      for (std::size_t i = 0; i < line.points.size(); ++i)
+        out << num(X(line.points[i].first)) << ',' << num(Y(line.band_lo[i])) << ' ';
+      for (std::size_t i = line.points.size(); i-- > 0;)
+        out << num(X(line.points[i].first)) << ',' << num(Y(line.band_hi[i])) << (i ? " " : "");
+      out << "'/>";
+    }
     out << "<polyline fill='none' stroke='" << colour << "' stroke-width='1.6' points='";
     for (std::size_t i = 0; i < series[s].points.size(); ++i)
       out << (i ? " " : "") << num(X(series[s].points[i].first)) << ','
@@ -152,7 +168,7 @@ std::string cactus_svg(const TimeProfiles& p, const StatisticsFigureOptions& opt
   for (std::size_t s = 0; s < p.solvers.size(); ++s) {
     Series line{p.solvers[s] + " (" + std::to_string(p.cactus[s].size()) + "/" +
                     std::to_string(p.runs[s].size()) + ")",
-                {{x.lo, 0.0}}};
+                {{x.lo, 0.0}}, {}, {}};
     for (const CactusPoint& point : p.cactus[s]) {
       line.points.emplace_back(point.seconds, point.runs_solved - 1);
       line.points.emplace_back(point.seconds, point.runs_solved);
@@ -172,7 +188,7 @@ std::string performance_profile_svg(const TimeProfiles& p, const StatisticsFigur
   x.hi = std::max(2.0, 1.2 * (p.taus.empty() ? 1.0 : p.taus.back()));
   Axis y;  // 0..1
   std::vector<Series> series;
-  for (std::size_t s = 0; s < p.solvers.size(); ++s) series.push_back({p.solvers[s], {}});
+  for (std::size_t s = 0; s < p.solvers.size(); ++s) series.push_back({p.solvers[s], {}, {}, {}});
   if (!p.ratios.empty()) {
     std::vector<double> before;
     for (std::size_t t = 0; t < p.taus.size(); ++t) {
@@ -189,6 +205,163 @@ std::string performance_profile_svg(const TimeProfiles& p, const StatisticsFigur
       "Performance profile (Dolan-More): instances solved within a factor tau of the best", x,
       "tau = time / best time on the instance (log scale)", y, false, "fraction of instances",
       series, options);
+}
+
+namespace {
+
+// One run's anytime trajectory as written by the suite runner (runs/<id>.anytime.csv):
+// (seconds, cost) of its feasible points, in order. Empty when missing or unreadable.
+std::vector<std::pair<double, double>> read_anytime(const std::string& path) {
+  std::vector<std::pair<double, double>> out;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) return out;  // header
+  while (std::getline(in, line)) {
+    double t = 0, cost = 0, hard = 0;
+    unsigned long long evaluations = 0;
+    if (std::sscanf(line.c_str(), "%lf,%llu,%lf,%lf", &t, &evaluations, &cost, &hard) != 4) continue;
+    if (hard <= 0 && std::isfinite(cost)) out.emplace_back(t, cost);
+  }
+  return out;
+}
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double at = q * static_cast<double>(v.size() - 1);
+  const auto i = static_cast<std::size_t>(at);
+  const double frac = at - static_cast<double>(i);
+  if (i + 1 >= v.size() || frac <= 0) return v[i];
+  if (!std::isfinite(v[i + 1])) return v[i + 1];  // between a cost and +inf: +inf
+  return v[i] + frac * (v[i + 1] - v[i]);
+}
+
+}  // namespace
+
+std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outcome,
+                                   const std::string& out_dir, const StatisticsFigureOptions& options) {
+  // problem -> solver -> runs' trajectories, in the suite's orders.
+  std::vector<std::string> problems, solvers;
+  std::map<std::pair<std::string, std::string>, std::vector<std::vector<std::pair<double, double>>>> runs;
+  std::map<std::pair<std::string, std::string>, std::vector<double>> finals;
+  const std::vector<std::string> columns = metric_columns(suite);
+  double first = std::numeric_limits<double>::infinity(), last = 0;
+  for (const RunResult& r : outcome.results) {
+    if (r.kind != "toy" || r.status != "ok") continue;
+    auto points = read_anytime((std::filesystem::path(out_dir) / "runs" / (r.id + ".anytime.csv")).string());
+    if (points.empty()) continue;
+    if (std::find(problems.begin(), problems.end(), r.subject) == problems.end()) problems.push_back(r.subject);
+    if (std::find(solvers.begin(), solvers.end(), r.solver) == solvers.end()) solvers.push_back(r.solver);
+    first = std::min(first, std::max(points.front().first, 1e-6));
+    last = std::max({last, points.back().first, metric_value(columns, r, "time_s")});
+    finals[{r.subject, r.solver}].push_back(points.back().second);
+    runs[{r.subject, r.solver}].push_back(std::move(points));
+  }
+  if (problems.empty()) return "";
+  const double limit = suite.toy_limits.time_limit_seconds > 0 ? suite.toy_limits.time_limit_seconds : last;
+  Axis x;
+  x.log = true;
+  x.lo = std::pow(10.0, std::floor(std::log10(first)));
+  x.hi = std::max(limit, x.lo * 10);
+  std::vector<double> grid;
+  for (int i = 0; i <= 48; ++i) grid.push_back(x.lo * std::pow(x.hi / x.lo, i / 48.0));
+  std::ostringstream out;
+  out << "<h2>Anytime curves</h2><p class='legend'>Each problem's best feasible cost found by "
+         "each time, per solver: the median over seeds (line) and the interquartile range "
+         "(band; a seed with no feasible assignment yet counts as infinite), drawn where at "
+         "least half the seeds have a feasible assignment; then each "
+         "solver's final costs over seeds as a box plot (whiskers: min and max). From "
+         "<code>runs/&lt;id&gt;.anytime.csv</code> (seconds, evaluations, cost, hard); "
+         "results.csv has the cost at 1%, 10% and 50% of the time limit.</p>";
+  constexpr std::size_t kMostProblems = 24;
+  for (std::size_t k = 0; k < problems.size() && k < kMostProblems; ++k) {
+    const std::string& problem = problems[k];
+    std::vector<Series> series;
+    Axis y;
+    y.lo = std::numeric_limits<double>::infinity();
+    y.hi = -y.lo;
+    for (const std::string& solver : solvers) {
+      const auto it = runs.find({problem, solver});
+      if (it == runs.end()) continue;
+      Series line{solver, {}, {}, {}};
+      for (const double t : grid) {
+        // A seed without a feasible assignment yet counts as +inf, so the quantiles of the
+        // seeds' (non-increasing) best costs do not increase either.
+        std::vector<double> at;
+        for (const auto& run : it->second) {
+          double cost = std::numeric_limits<double>::infinity();
+          for (const auto& [s, c] : run) {
+            if (s > t) break;
+            cost = c;
+          }
+          at.push_back(cost);
+        }
+        const double median = quantile(at, 0.5);
+        if (!std::isfinite(median)) continue;
+        line.points.emplace_back(t, median);
+        line.band_lo.push_back(quantile(at, 0.25));
+        line.band_hi.push_back(quantile(at, 0.75));  // +inf: drawn to the top
+        y.lo = std::min(y.lo, line.band_lo.back());
+        y.hi = std::max(y.hi, std::isfinite(line.band_hi.back()) ? line.band_hi.back() : median);
+      }
+      series.push_back(std::move(line));
+    }
+    for (Series& line : series) {
+      for (double& v : line.band_hi) v = std::isfinite(v) ? v : y.hi;
+    }
+    if (!std::isfinite(y.lo)) continue;
+    if (y.hi - y.lo < 1e-9) {
+      y.lo -= 1;
+      y.hi += 1;
+    }
+    out << chart_svg("Anytime curve: " + problem, x, "time, s (log scale)", y, false,
+                     "best cost (median, IQR band)", series, options);
+    // Box plot of the final costs.
+    const double width = options.width, row = 18, top = 26, left = 140, right = 30;
+    const double height = top + row * static_cast<double>(solvers.size()) + 30;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const std::string& solver : solvers) {
+      for (double c : finals[{problem, solver}]) {
+        lo = std::min(lo, c);
+        hi = std::max(hi, c);
+      }
+    }
+    if (hi - lo < 1e-9) {
+      lo -= 1;
+      hi += 1;
+    }
+    auto X = [&](double v) { return left + (v - lo) / (hi - lo) * (width - left - right); };
+    out << "<svg class='statistics-figure' viewBox='0 0 " << options.width << ' ' << num(height)
+        << "' width='" << options.width << "' height='" << num(height)
+        << "' font-family='sans-serif' font-size='10'><rect x='0' y='0' width='" << options.width
+        << "' height='" << num(height) << "' fill='#fff'/><text x='" << num(left) << "' y='16' "
+        << "font-size='12' fill='#222'>" << html_escape("Final cost over seeds: " + problem) << "</text>";
+    for (std::size_t s = 0; s < solvers.size(); ++s) {
+      const auto& v = finals[{problem, solvers[s]}];
+      const double cy = top + row * (static_cast<double>(s) + 0.5);
+      out << "<text x='" << num(left - 6) << "' y='" << num(cy + 3) << "' text-anchor='end' fill='#333'>"
+          << html_escape(solvers[s]) << "</text>";
+      if (v.empty()) continue;
+      const char* colour = kPalette[s % (sizeof kPalette / sizeof *kPalette)];
+      const double q1 = quantile(v, 0.25), q2 = quantile(v, 0.5), q3 = quantile(v, 0.75);
+      const double mn = *std::min_element(v.begin(), v.end()), mx = *std::max_element(v.begin(), v.end());
+      out << "<line x1='" << num(X(mn)) << "' x2='" << num(X(mx)) << "' y1='" << num(cy) << "' y2='"
+          << num(cy) << "' stroke='" << colour << "'/><rect x='" << num(X(q1)) << "' y='" << num(cy - 5)
+          << "' width='" << num(std::max(1.0, X(q3) - X(q1))) << "' height='10' fill='" << colour
+          << "' fill-opacity='0.3' stroke='" << colour << "'/><line x1='" << num(X(q2)) << "' x2='"
+          << num(X(q2)) << "' y1='" << num(cy - 5) << "' y2='" << num(cy + 5) << "' stroke='#222'/>";
+    }
+    const double axis_y = top + row * static_cast<double>(solvers.size()) + 4;
+    out << "<text x='" << num(left) << "' y='" << num(axis_y + 12) << "' fill='#555'>" << tick_text(lo)
+        << "</text><text x='" << num(width - right) << "' y='" << num(axis_y + 12)
+        << "' text-anchor='end' fill='#555'>" << tick_text(hi) << "</text><text x='"
+        << num((left + width - right) / 2) << "' y='" << num(axis_y + 12)
+        << "' text-anchor='middle' fill='#333'>final cost</text></svg>";
+  }
+  if (problems.size() > kMostProblems) {
+    out << "<p class='legend'>" << problems.size() - kMostProblems
+        << " more problems: their curves are in runs/*.anytime.csv.</p>";
+  }
+  return out.str();
 }
 
 std::string statistics_report_section(const Suite& suite, const SuiteOutcome& outcome,

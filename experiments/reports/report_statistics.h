@@ -31,6 +31,13 @@ std::string cactus_svg(const TimeProfiles& profiles, const StatisticsFigureOptio
 std::string performance_profile_svg(const TimeProfiles& profiles,
                                     const StatisticsFigureOptions& options = {});
 
+// The report section of anytime curves: per problem, each solver's best feasible cost over
+// time (median over seeds, interquartile band; from out_dir/runs/<id>.anytime.csv) and a
+// box plot of its final costs over seeds; empty when no problem run left a trajectory.
+std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outcome,
+                                   const std::string& out_dir,
+                                   const StatisticsFigureOptions& options = {});
+
 // The report section ("Solved against time": a short explanation and both figures); empty
 // when the suite has no problem runs.
 std::string statistics_report_section(const Suite& suite, const SuiteOutcome& outcome,

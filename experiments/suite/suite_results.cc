@@ -13,7 +13,10 @@ namespace {
 const std::vector<std::string>& toy_metric_names() {
   static const std::vector<std::string> names = {
       "cost", "hard_violations", "feasible", "time_s", "evaluations", "iterations", "stop",
-      "independent_broken", "time_to_best_s", "evaluations_to_best"};
+      "independent_broken", "time_to_best_s", "evaluations_to_best",
+      // The best feasible cost at 1%, 10% and 50% of the time limit (anytime curves in
+      // runs/<id>.anytime.csv); empty without a time limit or before the first feasible one.
+      "cost_at_1pct", "cost_at_10pct", "cost_at_50pct"};
   return names;
 }
 

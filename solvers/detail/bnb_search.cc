@@ -371,6 +371,7 @@ void BranchAndBoundSearch::leaf() {
     ub_ = score.soft;
     best_ = values_;
     optimal_count_ = 1;
+    budget_->note_best(full_evaluations_, 0, &score);
   } else if (count_mode_ && score.soft <= ub_ + tol) {
     ++optimal_count_;
   }

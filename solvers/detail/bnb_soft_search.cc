@@ -104,6 +104,7 @@ void SoftArcSearch::leaf() {
     ub_ = cost;
     best_ = values_;
     optimal_count_ = 1;
+    budget_->note_best(full_evaluations_, 0, &score);
   } else if (settings_.count_mode && cost == ub_) {
     ++optimal_count_;
   }

@@ -43,7 +43,8 @@ std::optional<FullEvaluation> DiscreteSearch::run(std::span<const double> start,
   make_groups_permutations(values);
   begin_dealt_run(std::move(values));
   best_.reset(evaluator_->values(), evaluator_->score(), std::max<std::size_t>(1024, n_));
-  budget_.note_best(evaluations_);
+  const csp::Score first = evaluator_->score();
+  budget_.note_best(evaluations_, 0, &first);
   if (!check_target() && options_.greedy_start) greedy_pass();
   main_loop();
   best_.materialise(evaluator_->values());
@@ -180,7 +181,7 @@ void DiscreteSearch::new_best(const csp::Score& score) {
   best_.improved(score);
   // Improvements come in bursts (every few moves while a run descends): a clock reading
   // 256 evaluations old is close enough, and spares the clock on 10^5 improvements a second.
-  budget_.note_best(evaluations_, 256);
+  budget_.note_best(evaluations_, 256, &score);
 }
 
 void DiscreteSearch::after_move() {

@@ -43,7 +43,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
   csp::Score here = problem.score(current);
   result.best = current;
   csp::Score best = here;
-  budget.note_best(1);
+  budget.note_best(1, 0, &best);
   std::uint64_t evaluations = 1, iterations = 0, restarts_used = 0, failures = 0;
   double radius = options.initial_radius;
   result.stop = StopReason::kCompleted;
@@ -72,7 +72,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
       if (here.better_than(best)) {
         best = here;
         result.best = current;
-        budget.note_best(evaluations);
+        budget.note_best(evaluations, 0, &best);
       }
       continue;
     }
@@ -99,7 +99,7 @@ void run_continuous_sls(const csp::Problem& problem, std::span<const double> sta
     if (here.better_than(best)) {
       best = here;
       result.best = current;
-      budget.note_best(evaluations);
+      budget.note_best(evaluations, 0, &best);
     }
   }
   result.evaluations = evaluations;

@@ -257,7 +257,7 @@ class TabuSearch {
       best_ = table_.values();
       best_step_ = iterations_;
       best_seconds_ = budget_.elapsed_seconds();
-      budget_.record_best(evaluations_, best_seconds_);
+      budget_.record_best(evaluations_, best_seconds_, &best_score_);
     }
   }
 
@@ -298,7 +298,7 @@ class TabuSearch {
       best_ = table_.values();
       best_step_ = iterations_;
       best_seconds_ = budget_.elapsed_seconds();
-      budget_.record_best(evaluations_, best_seconds_);
+      budget_.record_best(evaluations_, best_seconds_, &best_score_);
     }
   }
 

@@ -168,7 +168,7 @@ std::string Toulbar2Solver::unsuitable_reason(const csp::Problem& problem) const
 
 void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const double> start,
                                 const SolveContext& context, SolverResult& result) {
-  Budget budget(context.limits);
+  Budget budget(context);
   result.solutions_at_best = 0;
   result.alternatives.clear();
   result.message.clear();

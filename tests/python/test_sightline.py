@@ -94,6 +94,17 @@ def test_a_camera_trace_in_numpy_equals_the_programs_csv(tmp_path, binary, sourc
     assert "tracking shot" in run["summary"]
 
 
+def test_a_solve_keeps_its_anytime_trajectory(source_dir):
+    problem = sl.load_problem(os.path.join(source_dir, "examples/graphs/myciel5.col"), colours=5)
+    r = sl.solve(problem, "tabu", max_evaluations=200000)
+    assert r.trajectory, "an improvement at least"
+    times = [t for t, _, _, _ in r.trajectory]
+    costs = [c for _, _, c, h in r.trajectory if h == 0]
+    assert times == sorted(times)
+    assert costs == sorted(costs, reverse=True)
+    assert r.trajectory[-1][2] == r.cost and r.trajectory[-1][3] == r.hard
+
+
 def test_a_conversation_is_edited_with_its_shots_and_the_judges_metrics(source_dir):
     scene = os.path.join(source_dir, "experiments/scenes/conversations/two-standing.yaml")
     film = sl.follow(scene)

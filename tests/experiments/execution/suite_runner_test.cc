@@ -171,13 +171,23 @@ problems:
   auto value = [&](const RunResult& r, const std::string& name) {
     return r.values[std::find(columns.begin(), columns.end(), name) - columns.begin()];
   };
-  // sls notes its best; bnb records none, and the cell stays empty rather than guessed.
+  // Both note when they found their best (bnb: its last incumbent).
   const RunResult& sls = outcome.results[0].solver == "sls" ? outcome.results[0] : outcome.results[1];
   const RunResult& bnb = outcome.results[0].solver == "sls" ? outcome.results[1] : outcome.results[0];
   ASSERT_FALSE(value(sls, "time_to_best_s").empty());
   EXPECT_LE(std::stod(value(sls, "time_to_best_s")), std::stod(value(sls, "time_s")) + 1e-9);
   EXPECT_LE(std::stoull(value(sls, "evaluations_to_best")), std::stoull(value(sls, "evaluations")));
-  EXPECT_TRUE(value(bnb, "time_to_best_s").empty());
+  ASSERT_FALSE(value(bnb, "time_to_best_s").empty());
+  EXPECT_LE(std::stod(value(bnb, "time_to_best_s")), std::stod(value(bnb, "time_s")) + 1e-9);
+  EXPECT_LE(std::stoull(value(bnb, "evaluations_to_best")), std::stoull(value(bnb, "evaluations")));
+  // Without a time limit there are no checkpoints of it, and the cells stay empty.
+  EXPECT_TRUE(value(sls, "cost_at_10pct").empty());
+  // The anytime trajectory beside the result: a header and one row per improvement.
+  std::ifstream anytime(dir.path("out") + "/runs/" + sls.id + ".anytime.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(anytime, header));
+  EXPECT_EQ(header, "seconds,evaluations,cost,hard");
+  EXPECT_TRUE(std::getline(anytime, row));
 }
 
 // A toy suite repeated over seeds with two solvers: stats.csv beside results.csv holds each
