@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,6 +59,45 @@ csp::Spec to_spec(const py::handle& value) {
   throw py::type_error("a constraint field must be a number, string, bool, list or dict, got " +
                        std::string(py::str(value.get_type())));
 }
+
+// A constraint defined in Python: the function gets the scope's values (floats, in scope
+// order) and returns the violation (a finite number >= 0; 0 when satisfied). Solvers call it
+// with the GIL released around the solve, so each call takes the GIL; an exception it raises
+// comes back out of the solve as itself.
+class PythonConstraint : public csp::Constraint {
+ public:
+  PythonConstraint(std::vector<csp::VariableId> scope, py::function function, double weight,
+                   bool hard)
+      : Constraint(std::move(scope), weight, hard), function_(std::move(function)) {}
+  ~PythonConstraint() override {
+    py::gil_scoped_acquire gil;
+    function_ = py::function();
+  }
+  std::string_view kind() const override { return "python"; }
+  double violation(std::span<const double> values) const override {
+    py::gil_scoped_acquire gil;
+    const auto s = scope();
+    py::tuple args(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) args[i] = py::float_(values[s[i]]);
+    const py::object returned = function_(*args);
+    double v = 0;
+    try {
+      v = returned.cast<double>();
+    } catch (const py::cast_error&) {
+      throw py::type_error("python constraint '" + name() + "' must return its violation (a number), got " +
+                           std::string(py::str(returned.get_type())));
+    }
+    if (!std::isfinite(v) || v < 0) {
+      throw py::value_error("python constraint '" + name() + "' returned " + std::string(py::str(returned)) +
+                            ": a violation is a finite number >= 0 (0 when satisfied)");
+    }
+    return v;
+  }
+
+ private:
+  std::string name() const { return label().empty() ? std::string(kind()) : label(); }
+  py::function function_;
+};
 
 struct PyProblem {
   std::shared_ptr<csp::Problem> problem;
@@ -332,6 +372,26 @@ PYBIND11_MODULE(_sightline, m) {
            },
            py::arg("kind"), py::arg("scope"), py::arg("weight") = 1.0, py::arg("hard") = false,
            "A constraint of a registered kind over the named variables; its own fields as keywords.")
+      .def("function",
+           [](PyBuilder& b, const std::vector<std::string>& scope, const py::function& f, double weight, bool hard,
+              const std::string& label) {
+             if (!(weight >= 0) || !std::isfinite(weight)) throw py::value_error("weight must be a finite number >= 0");
+             std::vector<csp::VariableId> ids;
+             for (const std::string& n : scope) {
+               const auto id = b.get().problem().find_variable(n);
+               if (!id) throw py::value_error("unknown variable '" + n + "' in the scope of a python constraint");
+               ids.push_back(*id);
+             }
+             if (ids.empty()) throw py::value_error("a python constraint needs at least one variable in its scope");
+             auto c = std::make_unique<PythonConstraint>(std::move(ids), f, weight, hard);
+             c->set_label(label);
+             return b.get().add(std::move(c));
+           },
+           py::arg("scope"), py::arg("function"), py::arg("weight") = 1.0, py::arg("hard") = false,
+           py::arg("label") = "",
+           "A constraint defined in Python: function(*values of the scope) returns the violation "
+           "(a number >= 0, 0 when satisfied). Slower than a registered kind (a Python call per "
+           "evaluation); an exception it raises comes out of solve().")
       .def("build", [](PyBuilder& b) {
         PyProblem p{std::shared_ptr<csp::Problem>(b.get().build()), {}};
         b.builder.reset();

@@ -123,7 +123,8 @@ RunResult run_isolated(const Suite& suite, const SuiteRun& run, const std::strin
              " without a result" + (said.empty() ? std::string() : "; last output: " + said);
   }
   // Nothing half-done of this run stays behind.
-  for (const char* suffix : {".trace.csv", ".trace.csv.tmp", ".anytime.csv", ".anytime.csv.tmp", ".result.tmp"}) {
+  for (const char* suffix : {".trace.csv", ".trace.csv.tmp", ".anytime.csv", ".anytime.csv.tmp",
+                             ".solution.csv", ".solution.csv.tmp", ".result.tmp"}) {
     remove_quietly(base + suffix);
   }
   if (log_empty) remove_quietly(log_path);

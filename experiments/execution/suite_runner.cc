@@ -147,6 +147,24 @@ void write_anytime_csv(const std::string& path, const solvers::SolverResult& res
   std::filesystem::rename(tmp, path);
 }
 
+// The run's best assignment, a variable per row by name (runs/<id>.solution.csv), for
+// problems of up to kMostSolutionVariables variables (a million queens would write 15 MB a run).
+constexpr std::size_t kMostSolutionVariables = 100000;
+void write_solution_csv(const std::string& path, const csp::Problem& problem,
+                        const solvers::SolverResult& result) {
+  if (problem.num_variables() > kMostSolutionVariables) return;
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << "variable,value\n";
+    for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
+      out << problem.variable_name(v) << ',' << number_text(result.best[v]) << '\n';
+    }
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
 void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& anytime_path,
                  RunResult& r) {
   const LoadedSuiteProblem loaded = load_suite_problem(suite.problems[run.subject]);
@@ -188,7 +206,12 @@ void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& any
                                            cost_at(result, suite.toy_limits.time_limit_seconds, 0.1),
                                            cost_at(result, suite.toy_limits.time_limit_seconds, 0.5)};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
-  if (!anytime_path.empty()) write_anytime_csv(anytime_path, result);
+  if (!anytime_path.empty()) {
+    write_anytime_csv(anytime_path, result);
+    std::string solution = anytime_path;
+    solution.replace(solution.size() - std::string(".anytime.csv").size(), std::string::npos, ".solution.csv");
+    write_solution_csv(solution, *loaded.problem, result);
+  }
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
   if (const std::string why =

@@ -105,6 +105,49 @@ def test_a_solve_keeps_its_anytime_trajectory(source_dir):
     assert r.trajectory[-1][2] == r.cost and r.trajectory[-1][3] == r.hard
 
 
+def test_a_python_constraint_solves_like_the_kind_it_mimics():
+    def model(python):
+        b = sl.ProblemBuilder("colours")
+        for v in "abcd":
+            b.integer(v, 0, 2)
+        for x, y in ("ab", "bc", "cd", "da", "ac"):
+            if python:
+                b.function([x, y], lambda p, q: 1.0 if p == q else 0.0, weight=2, label=f"{x} != {y}")
+            else:
+                b.constrain("not_equal", [x, y], weight=2)
+        b.constrain("equals", ["a"], value=1)
+        return b.build()
+    for solver in ("bnb", "tabu", "sls"):
+        kind = sl.solve(model(False), solver, max_evaluations=50000)
+        python = sl.solve(model(True), solver, max_evaluations=50000)
+        assert python.cost == kind.cost, solver
+    assert sl.solve(model(True), "bnb").stop == "proven optimal"
+
+
+def test_a_python_constraint_that_raises_or_returns_nonsense_fails_the_solve_clearly():
+    def build(function):
+        b = sl.ProblemBuilder("bad")
+        b.integer("x", 0, 3)
+        b.function(["x"], function, label="mine")
+        return b.build()
+
+    class Broken(Exception):
+        pass
+
+    def raises(x):
+        raise Broken("no")
+    with pytest.raises(Broken):
+        sl.solve(build(raises), "sls", max_evaluations=100)
+    with pytest.raises(TypeError, match="mine.*number"):
+        sl.solve(build(lambda x: "high"), "sls", max_evaluations=100)
+    with pytest.raises(ValueError, match="mine.*>= 0"):
+        sl.solve(build(lambda x: -1.0), "bnb")
+    b = sl.ProblemBuilder("scope")
+    b.integer("x", 0, 1)
+    with pytest.raises(ValueError, match="unknown variable 'y'"):
+        b.function(["y"], lambda y: 0.0)
+
+
 def test_a_conversation_is_edited_with_its_shots_and_the_judges_metrics(source_dir):
     scene = os.path.join(source_dir, "experiments/scenes/conversations/two-standing.yaml")
     film = sl.follow(scene)

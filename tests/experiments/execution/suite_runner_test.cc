@@ -188,6 +188,13 @@ problems:
   ASSERT_TRUE(std::getline(anytime, header));
   EXPECT_EQ(header, "seconds,evaluations,cost,hard");
   EXPECT_TRUE(std::getline(anytime, row));
+  // The assignment beside it, a queen per row.
+  std::ifstream solution(dir.path("out") + "/runs/" + sls.id + ".solution.csv");
+  ASSERT_TRUE(std::getline(solution, header));
+  EXPECT_EQ(header, "variable,value");
+  int rows = 0;
+  while (std::getline(solution, row)) ++rows;
+  EXPECT_EQ(rows, 20);
 }
 
 // A toy suite repeated over seeds with two solvers: stats.csv beside results.csv holds each
