@@ -7,12 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sightline/csp/files/expanded_table.h"
+
 
 namespace sightline::csp {
 namespace {
 
 constexpr double kMaxExact = 9007199254740992.0;  // 2^53
-constexpr std::size_t kMaxExpandedTuples = 1'000'000;
 
 // A weighted cost as a .wcsp integer; refuses what would not read back exactly.
 std::int64_t integer_cost(const Constraint& c, double cost) {
@@ -39,48 +40,6 @@ std::int64_t largest_cost(const Constraint& c) {
   return integer_cost(c, c.distinctness()->counts_variables ? k - 1 : k * (k - 1) / 2);
 }
 
-// A constraint of any other kind over finite domains, as the cost of every tuple of its
-// scope's domains (in odometer order, the last variable fastest), weighted: its violation
-// asked of the constraint itself with the rest of the assignment at the domains' first
-// values. At most kMaxExpandedTuples tuples per constraint.
-struct Expanded {
-  std::vector<double> violations;  // per tuple
-};
-
-Expanded expand(const Problem& problem, const Constraint& c) {
-  const auto scope = c.scope();
-  double count = 1;
-  for (VariableId v : scope) count *= static_cast<double>(problem.domain(v).size());
-  if (count > static_cast<double>(kMaxExpandedTuples)) {
-    std::ostringstream message;
-    message << "cannot write " << c.describe() << " to .wcsp: as a cost table it has " << count
-            << " tuples, more than the " << kMaxExpandedTuples << " a constraint may expand to";
-    throw std::invalid_argument(message.str());
-  }
-  Expanded e;
-  e.violations.reserve(static_cast<std::size_t>(count));
-  std::vector<double> values(problem.num_variables());
-  for (VariableId v = 0; v < problem.num_variables(); ++v) values[v] = problem.domain(v).value_at(0);
-  std::vector<std::size_t> digit(scope.size(), 0);
-  for (std::size_t i = 0; i < scope.size(); ++i) values[scope[i]] = problem.domain(scope[i]).value_at(0);
-  while (true) {
-    e.violations.push_back(c.violation(values));
-    std::size_t p = scope.size();
-    while (p > 0) {
-      --p;
-      const Domain& d = problem.domain(scope[p]);
-      if (++digit[p] < d.size()) {
-        values[scope[p]] = d.value_at(digit[p]);
-        break;
-      }
-      digit[p] = 0;
-      values[scope[p]] = d.value_at(0);
-      if (p == 0) return e;
-    }
-    if (scope.empty()) return e;
-  }
-}
-
 }  // namespace
 
 void write_wcsp(const Problem& problem, std::ostream& out) {
@@ -95,6 +54,9 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
   // Check the kinds and find the upper bound before writing anything.
   std::int64_t ub = 1;
   // Constraints that are neither tables nor salldiff-able all_differents become cost tables.
+  struct Expanded {
+    std::vector<double> violations;
+  };
   std::vector<std::optional<Expanded>> expanded(problem.num_constraints());
   for (ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const Constraint& c = problem.constraint(id);
@@ -112,7 +74,7 @@ void write_wcsp(const Problem& problem, std::ostream& out) {
       }
     }
     if (!c.table_costs() && !salldiff) {
-      expanded[id] = expand(problem, c);
+      expanded[id] = Expanded{expand_violations(problem, c, ".wcsp")};
       if (!c.is_hard()) {
         double largest = 0;
         for (double v : expanded[id]->violations) largest = std::max(largest, v);

@@ -401,7 +401,7 @@ TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
 
 namespace {
 
-TEST(SightlineCli, ConvertsAModelOfAnyKindsToWcspThatReadsBackWithTheSameOptimum) {
+TEST(SightlineCli, ConvertsAModelOfAnyKindsToWcspCfnAndYamlThatReadBackWithTheSameOptimum) {
   const std::string problems = std::string(SIGHTLINE_SOURCE_DIR) + "/examples/problems/";
   const std::string out = (std::filesystem::temp_directory_path() /
                            ("sightline_convert_" + std::to_string(::getpid()) + ".wcsp")).string();
@@ -412,9 +412,19 @@ TEST(SightlineCli, ConvertsAModelOfAnyKindsToWcspThatReadsBackWithTheSameOptimum
   ASSERT_EQ(converted.status, 0) << converted.output;
   EXPECT_EQ(json_field(original.output, "d['cost']"), json_field(converted.output, "d['cost']"));
   std::filesystem::remove(out);
-  o = run("convert " + problems + "seating.yaml --to cfn");
+  // Through .cfn and a problem file too: the same optimum.
+  for (const char* to : {"cfn", "yaml"}) {
+    const std::string file = out + "." + to;
+    o = run("convert " + problems + "seating.yaml --to " + to + " --out " + file);
+    ASSERT_EQ(o.status, 0) << o.output;
+    const Outcome back = run("solve " + file + " --solver bnb --format json");
+    ASSERT_EQ(back.status, 0) << back.output;
+    EXPECT_EQ(json_field(original.output, "d['cost']"), json_field(back.output, "d['cost']")) << to;
+    std::filesystem::remove(file);
+  }
+  o = run("convert " + problems + "seating.yaml --to xml");
   EXPECT_EQ(o.status, 2);
-  EXPECT_TRUE(contains(o.output, "only wcsp")) << o.output;
+  EXPECT_TRUE(contains(o.output, "xml")) << o.output;
   o = run("convert " + problems + "shelf.yaml --to wcsp");  // continuous
   EXPECT_EQ(o.status, 2);
   EXPECT_TRUE(contains(o.output, "not discrete")) << o.output;

@@ -11,6 +11,9 @@
 #include <sstream>
 
 #include "tests/csp/brute_force.h"
+#include "sightline/csp/files/cfn_reader.h"
+#include "sightline/csp/files/problem_file.h"
+#include "sightline/csp/files/table_writers.h"
 #include "sightline/csp/files/wcsp_reader.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/not_equal.h"
@@ -122,18 +125,17 @@ TEST(WcspWriter, RefusesWhatWcspCannotExpress) {
   }
 }
 
-// Every built-in kind over finite domains goes to .wcsp as a cost table: read back, the
-// problem scores every assignment as the kind itself does (soft: the weighted cost; hard:
-// feasibility), on random assignments of small random problems.
-TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
-  struct Case {
-    std::string kind;
-    std::vector<std::string> scope;
-    Spec params;
-    double weight;
-    bool hard;
-  };
-  const std::vector<Case> cases = {
+struct KindCase {
+  std::string kind;
+  std::vector<std::string> scope;
+  Spec params;
+  double weight;
+  bool hard;
+};
+
+// A constraint of each built-in kind over small finite domains (integer weighted costs).
+std::vector<KindCase> kind_cases() {
+  return {
       {"not_equal", {"a", "b"}, Spec(), 3, false},
       {"not_equal", {"a", "c"}, Spec(), 1, true},
       {"linear", {"a", "b", "c"}, spec_from({{"coefficients", std::vector<double>{1, 2, -1}}, {"op", "<="}, {"rhs", 2}}), 2, false},
@@ -142,9 +144,17 @@ TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
       {"expression", {"a", "b"}, spec_from({{"formula", "abs(a - 2*b)"}}), 1, false},
       {"all_different", {"a", "b", "c"}, spec_from({{"offsets", std::vector<double>{0, 1, 2}}}), 4, false},
       {"all_different", {"a", "b", "d"}, Spec(), 1, false},  // d's domain differs: a table
+      {"in", {"d"}, spec_from({{"values", std::vector<double>{0, 5}}}), 2, false},
   };
+}
+
+// Writes a problem holding each case with `write`, reads it back with `read`, and compares
+// the scores of random assignments: soft costs equal, feasibility equal. `by_index`: the
+// format's values are domain indices (.wcsp, .cfn), else the values themselves.
+template <class Write, class Read>
+void check_round_trip(const std::vector<KindCase>& cases, Write write, Read read, bool by_index) {
   std::mt19937_64 rng(11);
-  for (const Case& k : cases) {
+  for (const KindCase& k : cases) {
     ProblemBuilder b("kind-" + k.kind);
     b.integer("a", 0, 3);
     b.integer("b", -1, 2);
@@ -153,25 +163,64 @@ TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
     b.constrain(k.kind, k.scope, k.params.is_map() ? k.params : Spec::map({}), k.weight, k.hard);
     const std::unique_ptr<Problem> original = b.build();
     std::stringstream text;
-    write_wcsp(*original, text);
-    const std::unique_ptr<Problem> back = parse_wcsp(text, "kind.wcsp");
+    write(*original, text);
+    const std::unique_ptr<Problem> back = read(text.str());
     ASSERT_EQ(back->num_variables(), original->num_variables()) << k.kind;
     for (int trial = 0; trial < 200; ++trial) {
-      std::vector<double> values(4), indices(4);
+      std::vector<double> values(4), written(4);
       for (VariableId v = 0; v < 4; ++v) {
         const Domain& d = original->domain(v);
         const std::size_t i = std::uniform_int_distribution<std::size_t>(0, d.size() - 1)(rng);
         values[v] = d.value_at(i);
-        indices[v] = back->domain(v).value_at(i);  // .wcsp values are domain indices
+        written[v] = by_index ? back->domain(v).value_at(i) : values[v];
       }
       const Score want = original->score(values);
-      const Score got = back->score(indices);
+      const Score got = back->score(written);
       EXPECT_EQ(want.feasible(), got.feasible()) << k.kind << " trial " << trial;
       if (want.feasible()) {
         EXPECT_NEAR(want.soft, got.soft, 1e-9) << k.kind << " trial " << trial;
       }
     }
   }
+}
+
+// Every built-in kind over finite domains goes to .wcsp as a cost table: read back, the
+// problem scores every assignment as the kind itself does (soft: the weighted cost; hard:
+// feasibility), on random assignments of small random problems.
+TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
+  check_round_trip(kind_cases(), [](const Problem& p, std::ostream& out) { write_wcsp(p, out); },
+                   [](const std::string& text) {
+                     std::istringstream in(text);
+                     return parse_wcsp(in, "kind.wcsp");
+                   },
+                   true);
+}
+
+// The same through .cfn and through this project's problem file (sightline convert --to
+// cfn|yaml), with a kind of fractional costs besides (stretch: .wcsp has integer costs only).
+TEST(TableWriters, EveryKindGoesToCfnAndToAProblemFileAndScoresAsTheKind) {
+  std::vector<KindCase> cases = kind_cases();
+  cases.push_back({"stretch", {"a", "b", "c"}, spec_from({{"min", 2}}), 1.5, false});
+  check_round_trip(cases, [](const Problem& p, std::ostream& out) { write_cfn(p, out); },
+                   [](const std::string& text) { return parse_cfn(text, "kind.cfn"); }, true);
+  check_round_trip(cases, [](const Problem& p, std::ostream& out) { write_problem_yaml(p, out); },
+                   [](const std::string& text) { return parse_problem(text, "kind.yaml"); }, false);
+}
+
+TEST(TableWriters, RefuseAContinuousScopeNamingIt) {
+  ProblemBuilder b("continuous");
+  b.real("x", 0, 1);
+  b.integer("y", 0, 2);
+  b.constrain("linear", {"x", "y"}, spec_from({{"op", "<="}, {"rhs", 1}}));
+  const auto p = b.build();
+  std::stringstream out;
+  try {
+    write_problem_yaml(*p, out);
+    ADD_FAILURE() << "written";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("variable x is continuous"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(write_cfn(*p, out), std::invalid_argument);
 }
 
 }  // namespace
