@@ -241,6 +241,44 @@ class Reader {
     }
     // The location of the scope line points at this very constraint when `scopes` lists many.
     const SourceLocation where = scope_field.where().line > 0 ? scope_field.where() : entry.where();
+    // An expression may name its scope's value labels: they become its constants (label i
+    // is value i), unless the entry gives constants of its own.
+    if (kind == "expression" && !entry.find("constants")) {
+      std::vector<std::pair<std::string, Spec>> constants;
+      std::unordered_map<std::string, std::pair<std::size_t, VariableId>> seen;
+      for (VariableId v : scope) {
+        if (v >= result_.value_labels.size()) continue;
+        const auto& labels = result_.value_labels[v];
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+          const std::string& label = labels[i];
+          if (names_.count(label) || problem().parameters().find(label)) continue;  // a name wins
+          if (const auto it = seen.find(label); it != seen.end()) {
+            if (it->second.first != i) {
+              scope_field.fail("label '" + label + "' is value " + std::to_string(it->second.first) +
+                               " of " + problem().variable_name(it->second.second) + " and value " +
+                               std::to_string(i) + " of " + problem().variable_name(v) +
+                               ": a formula could not tell which; give constants: yourself");
+            }
+            continue;
+          }
+          seen[label] = {i, v};
+          constants.emplace_back(label, Spec::number(static_cast<double>(i)));
+        }
+      }
+      if (!constants.empty()) {
+        std::vector<std::pair<std::string, Spec>> fields(entry.fields().begin(), entry.fields().end());
+        fields.emplace_back("constants", Spec::map(std::move(constants), entry.where()));
+        const Spec with = Spec::map(std::move(fields), entry.where());
+        auto constraint =
+            create_constraint(kinds, problem(), kind, std::move(scope), weight, hard, with, where);
+        try {
+          problem().add_constraint(std::move(constraint));
+        } catch (const std::invalid_argument& e) {
+          throw InputError(where, e.what());
+        }
+        return;
+      }
+    }
     auto constraint =
         create_constraint(kinds, problem(), kind, std::move(scope), weight, hard, entry, where);
     try {

@@ -47,7 +47,8 @@ double idiv_of(double a, double b) {
 
 ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
                                            std::vector<std::string> names, std::string formula,
-                                           const Parameters* parameters, double weight, bool hard)
+                                           const Parameters* parameters, double weight, bool hard,
+                                           const std::vector<std::pair<std::string, double>>& constants)
     : Constraint(std::move(scope), weight, hard),
       formula_(std::move(formula)),
       compiled_(std::make_unique<Compiled>()) {
@@ -95,6 +96,19 @@ ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
         // function or constant names) could not be named in a formula; leave it out.
       }
     }
+    for (const auto& [name, value] : constants) {
+      if (!is_identifier(name)) {
+        throw std::invalid_argument("constant '" + name + "' cannot be used in a formula: names "
+                                    "there are letters, digits and _, not starting with a digit");
+      }
+      const bool taken = std::find(names.begin(), names.end(), name) != names.end() ||
+                         (parameters && parameters->find(name).has_value());
+      if (taken) {
+        throw std::invalid_argument("'" + name + "' is both a constant (a value's label) and a "
+                                    "variable or parameter; rename one");
+      }
+      c.parser.DefineConst(name, value);
+    }
     c.parser.SetExpr(formula_);
     // GetUsedVar parses the formula, so syntax errors and unknown names surface here.
     for (const auto& [name, slot] : c.parser.GetUsedVar()) {
@@ -133,16 +147,25 @@ ConstraintKindInfo expression_kind() {
   return {"expression",
           "a muparser formula over the scope's names and the parameters; its value (>= 0) is the "
           "violation",
-          {"formula"},
+          {"formula", "constants"},
           [](const ConstraintRequest& r) -> std::unique_ptr<Constraint> {
             const Spec& field = r.params.at("formula");
             const std::string& formula = field.as_string("a formula for 'formula'");
             std::vector<std::string> names;
             names.reserve(r.scope.size());
             for (VariableId v : r.scope) names.push_back(r.problem.variable_name(v));
+            // constants: {name: number, ...} (a problem file adds its scope's value labels).
+            std::vector<std::pair<std::string, double>> constants;
+            if (const Spec* given = r.params.find("constants"); given != nullptr) {
+              if (!given->is_map()) given->fail("expected constants as {name: number, ...}");
+              for (const auto& [name, value] : given->fields()) {
+                constants.emplace_back(name, value.as_number("a number for constant '" + name + "'"));
+              }
+            }
             try {
               return std::make_unique<ExpressionConstraint>(
-                  r.scope, std::move(names), formula, &r.problem.parameters(), r.weight, r.hard);
+                  r.scope, std::move(names), formula, &r.problem.parameters(), r.weight, r.hard,
+                  constants);
             } catch (const std::invalid_argument& e) {
               field.fail(e.what());
             }

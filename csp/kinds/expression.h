@@ -40,9 +40,13 @@ class ExpressionConstraint : public Constraint {
   // (may be null) whose name is a valid identifier can be used too. Throws
   // std::invalid_argument carrying muparser's message for a formula that does not parse or
   // names something unknown, or when a name is both a scope variable and a parameter.
+  // `constants`: names the formula may use for fixed numbers (a problem file's value labels:
+  // `r == A` with A the label of value 0); a name also a scope variable or a parameter is
+  // refused.
   ExpressionConstraint(std::vector<VariableId> scope, std::vector<std::string> names,
                        std::string formula, const Parameters* parameters, double weight = 1,
-                       bool hard = false);
+                       bool hard = false,
+                       const std::vector<std::pair<std::string, double>>& constants = {});
   ~ExpressionConstraint() override;
 
   std::string_view kind() const override { return "expression"; }

@@ -317,3 +317,50 @@ TEST(ProblemFileExamples, ShelfOptimumIsTheDocumentedPointAndNoGridPointBeatsIt)
 
 }  // namespace
 }  // namespace sightline::csp
+
+namespace sightline::csp {
+namespace {
+
+// Value labels are an expression's constants: `r == A` reads A as r's value 0.
+TEST(ProblemFileLabels, AnExpressionNamesItsScopesValueLabels) {
+  const auto p = parse_problem(R"yaml(name: labels
+variables:
+  - {names: [r, s], labels: [A, B, C]}
+parameters:
+  limit: 1
+constraints:
+  - {kind: expression, scope: [r], formula: "r == A", weight: 2}
+  - {kind: expression, scope: [r, s], formula: "(r == s) * 5 + (s > B)"}
+  - {kind: expression, scope: [s], formula: "s == D", constants: {D: 2}}
+)yaml", "labels.yaml");
+  for (double r = 0; r < 3; ++r) {
+    for (double s = 0; s < 3; ++s) {
+      const double want = 2 * (r == 0) + 5 * (r == s) + (s > 1) + (s == 2);
+      EXPECT_DOUBLE_EQ(p->score(std::vector<double>{r, s}).soft, want) << r << " " << s;
+    }
+  }
+}
+
+TEST(ProblemFileLabels, ALabelMeaningTwoValuesInOneScopeIsRefusedAtTheScope) {
+  try {
+    parse_problem(R"yaml(variables:
+  - {name: r, labels: [A, B]}
+  - {name: s, labels: [B, A]}
+constraints:
+  - {kind: expression, scope: [r, s], formula: "r == A"}
+)yaml", "twice.yaml");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("twice.yaml:5:"), std::string::npos) << what;
+    EXPECT_NE(what.find("label 'B' is value 1 of r and value 0 of s"), std::string::npos) << what;
+  }
+  // A constant clashing with a scope variable is refused too.
+  EXPECT_THROW(parse_problem(R"yaml(variables: [{name: x, int: [0, 2]}]
+constraints:
+  - {kind: expression, scope: [x], formula: "x", constants: {x: 1}}
+)yaml", "clash.yaml"), InputError);
+}
+
+}  // namespace
+}  // namespace sightline::csp
