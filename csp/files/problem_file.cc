@@ -243,6 +243,7 @@ class Reader {
     const SourceLocation where = scope_field.where().line > 0 ? scope_field.where() : entry.where();
     // An expression may name its scope's value labels: they become its constants (label i
     // is value i), unless the entry gives constants of its own.
+    Spec with_labels;
     if (kind == "expression" && !entry.find("constants")) {
       std::vector<std::pair<std::string, Spec>> constants;
       std::unordered_map<std::string, std::pair<std::size_t, VariableId>> seen;
@@ -268,19 +269,11 @@ class Reader {
       if (!constants.empty()) {
         std::vector<std::pair<std::string, Spec>> fields(entry.fields().begin(), entry.fields().end());
         fields.emplace_back("constants", Spec::map(std::move(constants), entry.where()));
-        const Spec with = Spec::map(std::move(fields), entry.where());
-        auto constraint =
-            create_constraint(kinds, problem(), kind, std::move(scope), weight, hard, with, where);
-        try {
-          problem().add_constraint(std::move(constraint));
-        } catch (const std::invalid_argument& e) {
-          throw InputError(where, e.what());
-        }
-        return;
+        with_labels = Spec::map(std::move(fields), entry.where());
       }
     }
-    auto constraint =
-        create_constraint(kinds, problem(), kind, std::move(scope), weight, hard, entry, where);
+    auto constraint = create_constraint(kinds, problem(), kind, std::move(scope), weight, hard,
+                                        with_labels.is_map() ? with_labels : entry, where);
     try {
       problem().add_constraint(std::move(constraint));
     } catch (const std::invalid_argument& e) {
