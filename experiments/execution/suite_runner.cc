@@ -109,14 +109,16 @@ void execute_camera(const Suite& suite, const SuiteRun& run, const std::string& 
   if (!trace_path.empty()) write_trace_csv(trace_path, camera_run.trace);
   const std::vector<double> values = metric_values(camera_run.metrics);
   for (std::size_t i = 0; i < values.size(); ++i) r.values[i] = number_text(values[i]);
-  if (camera_run.edit) {
-    const std::vector<std::string> columns = metric_columns(suite);
-    const std::vector<double> edit = edit_metric_values(*camera_run.edit);
-    for (std::size_t i = 0; i < edit.size(); ++i) {
-      const auto c = std::find(columns.begin(), columns.end(), edit_metric_names()[i]);
-      if (c != columns.end()) r.values[static_cast<std::size_t>(c - columns.begin())] = number_text(edit[i]);
+  // An edit's or a tracking shot's own columns, where the suite has them.
+  const std::vector<std::string> columns = metric_columns(suite);
+  auto put = [&](const std::vector<std::string>& names, const std::vector<double>& extra) {
+    for (std::size_t i = 0; i < extra.size(); ++i) {
+      const auto c = std::find(columns.begin(), columns.end(), names[i]);
+      if (c != columns.end()) r.values[static_cast<std::size_t>(c - columns.begin())] = number_text(extra[i]);
     }
-  }
+  };
+  if (camera_run.edit) put(edit_metric_names(), edit_metric_values(*camera_run.edit));
+  if (camera_run.shot) put(shot_metric_names(), shot_metric_values(*camera_run.shot));
   r.status = "ok";
 }
 

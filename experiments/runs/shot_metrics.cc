@@ -19,6 +19,16 @@ double percentile(std::vector<double> v, double q) {
 
 }  // namespace
 
+const std::vector<std::string>& shot_metric_names() {
+  static const std::vector<std::string> names = {"shot_shown_min_pct", "shot_satisfaction_mean",
+                                                 "shot_satisfaction_p10", "shot_feasible_pct"};
+  return names;
+}
+
+std::vector<double> shot_metric_values(const ShotMetrics& m) {
+  return {m.shown_percent_min, m.satisfaction_mean, m.satisfaction_p10, m.feasible_percent};
+}
+
 ShotMetrics shot_metrics(const camera::Scene& scene, const std::vector<TraceRow>& trace) {
   const camera::Shot& shot = *scene.shot();
   ShotMetrics m;

@@ -30,6 +30,11 @@ struct ShotMetrics {
   double feasible_percent = 0;      // frames whose pose breaks no rule of the shot
 };
 
+// The metrics' names as suites' results.csv columns (shot_shown_min_pct,
+// shot_satisfaction_mean, shot_satisfaction_p10, shot_feasible_pct), and their values.
+const std::vector<std::string>& shot_metric_names();
+std::vector<double> shot_metric_values(const ShotMetrics& m);
+
 // The scene must have a shot; the trace's rows carry its fov and roll.
 ShotMetrics shot_metrics(const camera::Scene& scene, const std::vector<TraceRow>& trace);
 

@@ -6,6 +6,7 @@
 #include "sightline/experiments/runs/edit_metrics.h"
 #include "sightline/experiments/runs/edit_run.h"
 #include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/runs/shot_metrics.h"
 
 namespace sightline::experiments {
 namespace {
@@ -47,6 +48,11 @@ std::vector<std::string> metric_columns(const Suite& suite) {
   if (std::any_of(suite.scenes.begin(), suite.scenes.end(),
                   [](const SuiteScene& s) { return s.scene && is_edit_scene(*s.scene); })) {
     columns.insert(columns.end(), edit_metric_names().begin(), edit_metric_names().end());
+  }
+  // Scenes with a shot: block (tracking shots) add the shot's columns likewise.
+  if (std::any_of(suite.scenes.begin(), suite.scenes.end(),
+                  [](const SuiteScene& s) { return s.scene && s.scene->shot() != nullptr; })) {
+    columns.insert(columns.end(), shot_metric_names().begin(), shot_metric_names().end());
   }
   if (!suite.problems.empty()) {
     columns.insert(columns.end(), toy_metric_names().begin(), toy_metric_names().end());
