@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "sightline/experiments/runs/html_text.h"
+#include "sightline/domains/camera/composition/shot.h"
 #include "sightline/experiments/replay/replay_sources.h"
 #include "sightline/experiments/runs/stable_hash.h"
 
@@ -277,6 +278,25 @@ std::string scene_json(const ReplayScene& rs) {
       << ",\"step\":" << json_number(grid.step) << "}";
   out << ",\"character\":{\"size\":" << json_vec3(scene.character().size)
       << ",\"look_at_height\":" << json_number(scene.character().look_at_height) << "}";
+  // A tracking shot's composition, drawn over the main-camera panel: the image's aspect, the
+  // framed properties' rectangles and the screen positions asked for (screen units, (0, 0)
+  // bottom-left).
+  if (const camera::Shot* shot = scene.shot()) {
+    out << ",\"shot\":{\"aspect\":" << json_number(shot->aspect) << ",\"rects\":[";
+    std::size_t n = 0;
+    for (const camera::ShotProperty& p : shot->properties) {
+      if (p.kind != "framed" || p.range.hi <= 0) continue;
+      out << (n++ ? "," : "") << "[" << json_number(p.rect[0]) << "," << json_number(p.rect[1]) << ","
+          << json_number(p.rect[2]) << "," << json_number(p.rect[3]) << "]";
+    }
+    out << "],\"points\":[";
+    n = 0;
+    for (const camera::ShotProperty& p : shot->properties) {
+      if (p.kind != "screen_position") continue;
+      out << (n++ ? "," : "") << "[" << json_number(p.at.x()) << "," << json_number(p.at.y()) << "]";
+    }
+    out << "]}";
+  }
 
   std::vector<float> boxes;
   for (const camera::SolidBox& b : scene.solids()) {

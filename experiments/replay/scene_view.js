@@ -157,7 +157,9 @@
       var c = el('canvas', 'replay-camera', p);
       c.setAttribute('aria-label', 'what the main camera sees');
       c.dataset.slot = slot;
-      ui.panel[slot] = { box: p, label: label, canvas: c };
+      // A tracking shot's composition (thirds, framed rectangles, screen positions) over it.
+      var overlay = d.shot ? el('canvas', 'replay-overlay', p) : null;
+      ui.panel[slot] = { box: p, label: label, canvas: c, overlay: overlay };
     });
     el('div', 'replay-legend', ui, 'Magenta: the character; yellow: the look-at point with the ' +
        'sight line (green visible, red hidden by the independent check); orange / blue: the ' +
@@ -368,6 +370,46 @@
       g.restore();
     }
   };
+  // Draws the shot's composition over a main-camera panel: the image the shot asks for (its
+  // aspect, at the panel's height: the panel shows the frame's vertical extent), its thirds,
+  // the framed rectangles (dashed) and the screen positions (crosses).
+  Replay.prototype.drawComposition = function (slot) {
+    var shot = this.data.shot, panel = this.ui.panel[slot];
+    if (!shot || !panel || !panel.overlay) return;
+    var c = panel.overlay, src = panel.canvas;
+    var w = Math.max(1, src.clientWidth), h = Math.max(1, src.clientHeight);
+    c.style.left = src.offsetLeft + 'px';
+    c.style.top = src.offsetTop + 'px';
+    c.style.width = w + 'px';
+    c.style.height = h + 'px';
+    c.width = w;
+    c.height = h;
+    var g = c.getContext('2d');
+    g.clearRect(0, 0, w, h);
+    var scale = shot.aspect / (w / h);  // the shot's image is this much wider than the panel
+    var X = function (sx) { return w / 2 + (sx - 0.5) * w * scale; };
+    var Y = function (sy) { return h * (1 - sy); };
+    g.strokeStyle = 'rgba(255,255,255,0.7)';
+    g.lineWidth = 1;
+    g.setLineDash([]);
+    [1 / 3, 2 / 3].forEach(function (v) {
+      g.beginPath(); g.moveTo(X(v), 0); g.lineTo(X(v), h); g.stroke();
+      g.beginPath(); g.moveTo(X(0), Y(v)); g.lineTo(X(1), Y(v)); g.stroke();
+    });
+    g.strokeRect(X(0), Y(1), X(1) - X(0), Y(0) - Y(1));
+    g.strokeStyle = 'rgba(25,113,194,0.9)';
+    g.setLineDash([4, 3]);
+    (shot.rects || []).forEach(function (r) {
+      g.strokeRect(X(r[0]), Y(r[3]), X(r[2]) - X(r[0]), Y(r[1]) - Y(r[3]));
+    });
+    g.setLineDash([]);
+    g.strokeStyle = 'rgba(224,49,49,0.95)';
+    (shot.points || []).forEach(function (p) {
+      var x = X(p[0]), y = Y(p[1]);
+      g.beginPath(); g.moveTo(x - 5, y); g.lineTo(x + 5, y); g.moveTo(x, y - 5); g.lineTo(x, y + 5); g.stroke();
+    });
+  };
+
   // The name of the shot at a frame of an edited film, or ''.
   function shotAt(run, frame) {
     var shots = run.shots || [], name = '';
@@ -457,6 +499,7 @@
       if (pc.fov !== fov) { pc.fov = fov; pc.updateProjectionMatrix(); }
       if (run.lns) pc.rotateZ(run.lns[f * 2 + 1] * Math.PI / 180);
       state[slot] = { run: run, frame: f, hidden: hidden };
+      self.drawComposition(slot);
       var p = ui.panel[slot];
       p.box.classList.toggle('replay-hidden-frame', hidden);
       p.label.textContent = 'main camera: ' + run.label + (hidden ? ' \u2014 look-at point hidden' : '');
