@@ -29,6 +29,8 @@
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/metrics.h"
+#include "sightline/experiments/sources/agile_families.h"
+#include "sightline/experiments/sources/scene_families.h"
 #include "sightline/experiments/sources/scene_files.h"
 #include "sightline/experiments/sources/scene_generator.h"
 
@@ -220,6 +222,32 @@ int main(int argc, char** argv) {
         ("BM_ThesisScene/" + std::filesystem::path(path).stem().string()).c_str(),
         [path](benchmark::State& state) { BM_ThesisScene(state, path); })
         ->Iterations(3)
+        ->Unit(benchmark::kMillisecond);
+  }
+  // The default camera (preset `default`) on every box scene: the shipped thesis and
+  // anticipation scenes, and seeds 1-3 of the generated walk and agile families (issue 24's
+  // target: p99 under 100 us on box scenes, one core).
+  std::vector<std::shared_ptr<const Scene>> box_scenes;
+  for (const char* folder : {"/experiments/scenes", "/experiments/scenes/anticipation"}) {
+    for (const std::string& path : sightline::experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) + folder)) {
+      box_scenes.push_back(std::make_shared<const Scene>(sightline::camera::read_scene_file(path)));
+    }
+  }
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    for (const auto family : sightline::experiments::all_scene_families()) {
+      box_scenes.push_back(std::make_shared<const Scene>(sightline::experiments::generate_family(family, seed)));
+    }
+    for (const auto family : sightline::experiments::all_agile_families()) {
+      box_scenes.push_back(std::make_shared<const Scene>(sightline::experiments::generate_agile(family, seed)));
+    }
+  }
+  for (const auto& scene : box_scenes) {
+    benchmark::RegisterBenchmark(("BM_BoxSceneDefault/" + scene->name()).c_str(),
+                                 [scene](benchmark::State& state) {
+                                   walk(state, *scene, "occlusion-octree",
+                                        sightline::camera::preset_profile(sightline::camera::kDefaultPreset));
+                                 })
+        ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
