@@ -112,10 +112,12 @@ class TableCosts {
 };
 
 // Runs of equal values (the `stretch` kind): the violation is the sum, over the maximal runs
-// of equal consecutive values along the scope, of max(0, min_length - length) / min_length,
-// so a sequence solver can count runs instead of evaluating the whole scope.
+// of equal consecutive values along the scope, of max(0, min_length - length) / min_length
+// plus, with max_length > 0, max(0, length - max_length) / max_length, so a sequence solver
+// can count runs instead of evaluating the whole scope.
 struct RunLengths {
   std::size_t min_length = 1;
+  std::size_t max_length = 0;  // 0: no maximum
 };
 
 struct Distinctness {

@@ -71,7 +71,9 @@ ChainShape shape_of(const csp::Problem& problem) {
         return shape;
       }
       shape.runs.push_back(c);
-      shape.cap = std::max(shape.cap, runs->min_length);
+      // Lengths up to the minimum are told apart exactly; past a maximum, each step costs.
+      shape.cap = std::max({shape.cap, runs->min_length,
+                            runs->max_length > 0 ? runs->max_length + 1 : std::size_t{1}});
     } else if (scope.size() == 1) {
       shape.unary[scope[0]].push_back(c);
     } else if (scope.size() == 2 && (scope[0] + 1 == scope[1] || scope[1] + 1 == scope[0])) {
@@ -128,15 +130,20 @@ void ChainSolver::solve_into(const csp::Problem& problem, std::span<const double
   auto value = [&](std::size_t i, std::size_t a) {
     return problem.domain(static_cast<csp::VariableId>(i)).value_at(a);
   };
-  // The cost of a run of `length` ending (its shortfall under each run constraint).
-  std::vector<csp::Score> run_end(cap + 1);
+  // The cost of a run of `length` ending (its shortfall under each run constraint), and of
+  // a run of `length` (cap: cap or longer) growing by one (its excess over each maximum).
+  std::vector<csp::Score> run_end(cap + 1), run_grows(cap + 1);
   for (std::size_t length = 1; length <= cap; ++length) {
     for (const csp::ConstraintId c : shape.runs) {
       const csp::Constraint& constraint = problem.constraint(c);
-      const std::size_t m = constraint.run_lengths()->min_length;
+      const csp::RunLengths runs = *constraint.run_lengths();
+      const std::size_t m = runs.min_length;
       const double shortfall =
           length >= m ? 0.0 : static_cast<double>(m - length) / static_cast<double>(m);
       add_cost(constraint, shortfall, run_end[length]);
+      if (runs.max_length > 0 && (length == cap || length + 1 > runs.max_length)) {
+        add_cost(constraint, 1.0 / static_cast<double>(runs.max_length), run_grows[length]);
+      }
     }
   }
   const csp::Score kNone{std::numeric_limits<double>::infinity(), 0};
@@ -193,6 +200,7 @@ void ChainSolver::solve_into(const csp::Problem& problem, std::span<const double
           std::size_t r2 = 1;
           if (same) {
             r2 = std::min(r + 1, cap);
+            s += run_grows[r];
           } else {
             s += run_end[r];
           }

@@ -5,7 +5,8 @@
 // every constraint unary, binary over two consecutive variables (i, i + 1), or a run-length
 // constraint (csp::Constraint::run_lengths(), the `stretch` kind) over all the variables in
 // id order. The state at variable i is its value and how long the run of equal values
-// ending there is (capped at the largest minimum length), so the optimum is exact: hard
+// ending there is (capped at the largest minimum length, or one past the largest maximum:
+// each step beyond a maximum costs its share), so the optimum is exact: hard
 // violation first, then cost, as csp::Score orders them. Work: n x D^2 x L transitions for
 // n variables of at most D values and runs capped at L; the solver refuses problems above
 // `max_transitions` and problems that are not chains (unsuitable_reason says which

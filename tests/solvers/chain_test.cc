@@ -22,7 +22,8 @@ using csp::VariableId;
 
 // A random chain of `n` variables (2..4 values each) with unary and consecutive-pair tables
 // (some hard) and, when `stretch` > 0, a stretch constraint of that minimum over them all.
-std::unique_ptr<csp::Problem> random_chain(std::mt19937& rng, std::size_t n, std::size_t stretch) {
+std::unique_ptr<csp::Problem> random_chain(std::mt19937& rng, std::size_t n, std::size_t stretch,
+                                           std::size_t longest = 0) {
   auto p = std::make_unique<csp::Problem>("chain");
   std::uniform_int_distribution<int> size(2, 4), coin(0, 99), cost(0, 6);
   std::vector<std::vector<double>> domains;
@@ -58,7 +59,7 @@ std::unique_ptr<csp::Problem> random_chain(std::mt19937& rng, std::size_t n, std
   if (stretch > 0) {
     std::vector<VariableId> all(n);
     for (std::size_t v = 0; v < n; ++v) all[v] = VariableId(v);
-    p->add_constraint(std::make_unique<csp::StretchConstraint>(all, stretch, 5.0));
+    p->add_constraint(std::make_unique<csp::StretchConstraint>(all, stretch, 5.0, false, longest));
   }
   return p;
 }
@@ -74,7 +75,10 @@ TEST(Chain, FindsTheBruteForceOptimumOnRandomChains) {
   int feasible = 0;
   for (int round = 0; round < 120; ++round) {
     const std::size_t n = 1 + round % 8;
-    auto p = random_chain(rng, n, round % 3 == 0 ? 0 : 1 + round % 4);
+    // Some with a maximum run length too (at least the minimum).
+    const std::size_t min = round % 3 == 0 ? 0 : 1 + round % 4;
+    const std::size_t max = min > 0 && round % 2 == 0 ? min + round % 3 : 0;
+    auto p = random_chain(rng, n, min, max);
     const auto expected = testing::brute_force_optimum(*p);
     const SolverResult r = run_chain(*p);
     ASSERT_EQ(r.stop, StopReason::kProvenOptimal) << "round " << round;
@@ -135,6 +139,10 @@ TEST(Stretch, ViolationCountsShortRunsByHand) {
   EXPECT_NEAR(s.violation(a), 2.0 / 3 + 1.0 / 3 + 2.0 / 3, 1e-12);
   EXPECT_EQ(s.violation(std::vector<double>{2, 2, 2, 2, 2, 2, 2}), 0.0);
   EXPECT_NEAR(s.violation(std::vector<double>{0, 1, 0, 1, 0, 1, 0}), 7 * 2.0 / 3, 1e-12);
+  // With a maximum of 4: one run of 7 is 3 too long (3/4); runs of 3 and 4 cost nothing.
+  csp::StretchConstraint bounded({0, 1, 2, 3, 4, 5, 6}, 3, 1, false, 4);
+  EXPECT_NEAR(bounded.violation(std::vector<double>{2, 2, 2, 2, 2, 2, 2}), 3.0 / 4, 1e-12);
+  EXPECT_NEAR(bounded.violation(std::vector<double>{1, 1, 1, 2, 2, 2, 2}), 0, 1e-12);
 }
 
 TEST(Stretch, DeltasMatchFullEvaluation) {
@@ -143,7 +151,7 @@ TEST(Stretch, DeltasMatchFullEvaluation) {
     p.add_variables("x", 12, csp::Domain::integer_range(0, 2));
     std::vector<VariableId> all(12);
     for (VariableId v = 0; v < 12; ++v) all[v] = v;
-    p.add_constraint(std::make_unique<csp::StretchConstraint>(all, min, 2.0));
+    p.add_constraint(std::make_unique<csp::StretchConstraint>(all, min, 2.0, false, min == 1 ? 0 : min + 2));
     csp::testing::check_incremental_matches_full(p, 100 + std::uint32_t(min), 400);
   }
 }

@@ -108,6 +108,10 @@ EditCosts edit_costs(const Scene& scene, const Footage& footage, const EditWeigh
   costs.shots = footage.candidates.size();
   costs.min_slots = std::max<std::size_t>(
       1, static_cast<std::size_t>(std::ceil(w.min_shot_seconds / footage.slot_seconds - 1e-9)));
+  if (w.max_shot_seconds > 0) {
+    costs.max_slots = std::max<std::size_t>(
+        costs.min_slots, static_cast<std::size_t>(std::floor(w.max_shot_seconds / footage.slot_seconds + 1e-9)));
+  }
   costs.unary.assign(costs.slots, std::vector<ShotCostParts>(costs.shots));
   costs.totals.assign(costs.slots, std::vector<double>(costs.shots, 0.0));
   costs.change.assign(costs.slots, std::vector<double>(costs.shots * costs.shots, 0.0));
@@ -245,6 +249,11 @@ std::unique_ptr<csp::Problem> edit_problem(const EditCosts& costs, const EditWei
   auto stretch = std::make_unique<csp::StretchConstraint>(all, costs.min_slots, w.short_shot);
   stretch->set_label("shots of at least " + std::to_string(costs.min_slots) + " slots");
   problem->add_constraint(std::move(stretch));
+  if (costs.max_slots > 0 && w.long_shot > 0) {
+    auto rhythm = std::make_unique<csp::StretchConstraint>(all, 1, w.long_shot, false, costs.max_slots);
+    rhythm->set_label("shots of at most " + std::to_string(costs.max_slots) + " slots");
+    problem->add_constraint(std::move(rhythm));
+  }
   return problem;
 }
 
@@ -262,9 +271,12 @@ std::vector<std::size_t> greedy_edit(const EditCosts& costs, const EditWeights& 
     // A shot whose camera jumps must be left (or cut within).
     const bool must = costs.jumps[i][current];
     if (age >= costs.min_slots || must) {
-      // The cheapest shot now among those a plain cut reaches (no line crossed, no jump cut).
+      // The cheapest shot now among those a plain cut reaches (no line crossed, no jump cut);
+      // staying past the maximum length costs its share.
+      const bool overdue = costs.max_slots > 0 && age >= costs.max_slots;
       std::size_t best = current;
-      double best_cost = costs.totals[i][current] + (must ? w.cut : 0);
+      double best_cost = costs.totals[i][current] + (must ? w.cut : 0) +
+                         (overdue ? w.long_shot / static_cast<double>(costs.max_slots) : 0);
       for (std::size_t k = 0; k < costs.shots; ++k) {
         if (k == current || change[current * costs.shots + k] > w.cut + w.on_line) continue;
         if (costs.totals[i][k] + w.hysteresis < best_cost) {

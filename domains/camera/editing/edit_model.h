@@ -17,7 +17,8 @@
 //     unless its camera jumps (then it is a cut keeping the shot's name, priced as one and
 //     as a shot cut short, since the runs of the stretch below do not see it);
 //   stretch over all the slots: a shot shorter than the minimum length costs
-//     short_shot x its shortfall (csp/kinds/stretch.h).
+//     short_shot x its shortfall, and one longer than the maximum long_shot x its excess
+//     (csp/kinds/stretch.h: two stretch constraints, each with its weight).
 // So the model is a chain: `chain` solves it exactly, and bnb, tabu, lns and sls like any
 // weighted CSP. greedy_edit is the baseline: at each slot, once the shot has lasted the
 // minimum, it cuts to the shot cheapest now if that beats the current one by a margin
@@ -47,6 +48,10 @@ struct EditWeights {
   double on_line = 1;         // a cut from or to a camera within a third of a metre of the line
   double short_shot = 100;    // x a shot's shortfall below the minimum length (fraction)
   double min_shot_seconds = 2;
+  // Rhythm: a shot held longer than this costs long_shot x its excess (fraction of it), so a
+  // long line is cut up among shots of its speaker (0: no maximum).
+  double max_shot_seconds = 8;
+  double long_shot = 32;
   double readable_size = 0.2;  // a speaker's body at least this much of the image height
   double max_speed = 8;        // m/s: the film's camera; a shot's moving over half this between slots jumps
   double hysteresis = 0.3;     // greedy: how much cheaper another shot must be to cut to it
@@ -61,6 +66,7 @@ struct ShotCostParts {
 struct EditCosts {
   std::size_t slots = 0, shots = 0;
   std::size_t min_slots = 1;                    // the minimum shot length in slots
+  std::size_t max_slots = 0;                    // the maximum (0: none)
   std::vector<std::vector<ShotCostParts>> unary;  // [slot][shot]
   std::vector<std::vector<double>> totals;      // [slot][shot]: unary[slot][shot].total()
   std::vector<std::vector<double>> change;      // [slot][from * shots + to], slot >= 1
