@@ -17,7 +17,6 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
-#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/solvers/registry.h"
 
 namespace sightline::apps {
@@ -73,10 +72,7 @@ void run_follow(const FollowOptions& o) {
                                            : camera::read_profile_file(o.profile);
   }
   camera::ChaseCameraOptions options;
-  options.solver = !o.solver.empty()                ? o.solver
-                   : scene.shot()                    ? camera::kRecommendedCompositionSolver
-                   : experiments::is_edit_scene(scene) ? camera::kDefaultEditSolver
-                                                       : camera::kRecommendedCameraSolver;
+  options.solver = !o.solver.empty() ? o.solver : experiments::recommended_solver(scene);
   options.seed = o.seed;
   options.visibility_guard = !o.no_guard;
   options.target_smoothing_stages = o.smoothing_stages;

@@ -27,10 +27,8 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/execution/suite_runner.h"
-#include "sightline/domains/camera/editing/editor.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/edit_metrics.h"
-#include "sightline/experiments/runs/edit_run.h"
 #include "sightline/experiments/suite/suite.h"
 #include "sightline/solvers/registry.h"
 
@@ -256,10 +254,7 @@ py::dict follow(const std::string& scene_path, const std::string& solver, const 
     chosen = camera::is_preset(profile) ? camera::preset_profile(profile) : camera::read_profile_file(profile);
   }
   camera::ChaseCameraOptions options;
-  options.solver = !solver.empty()                  ? solver
-                   : scene.shot()                      ? camera::kRecommendedCompositionSolver
-                   : experiments::is_edit_scene(scene) ? camera::kDefaultEditSolver
-                                                       : camera::kRecommendedCameraSolver;
+  options.solver = !solver.empty() ? solver : experiments::recommended_solver(scene);
   options.seed = seed;
   experiments::CameraRun run;
   {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace sightline::solvers {
 
@@ -94,26 +95,31 @@ void add_cost(const csp::Constraint& c, double violation, csp::Score& score) {
   (c.is_hard() ? score.hard : score.soft) += c.weight() * violation;
 }
 
-}  // namespace
-
-std::string ChainSolver::unsuitable_reason(const csp::Problem& problem) const {
-  const ChainShape shape = shape_of(problem);
+// Why the solver refuses a problem of this shape, or "".
+std::string refusal(const ChainShape& shape, std::int64_t max_transitions) {
   if (!shape.why_not.empty()) return shape.why_not;
-  if (shape.transitions > static_cast<double>(options_.max_transitions)) {
+  if (shape.transitions > static_cast<double>(max_transitions)) {
     std::ostringstream out;
     out << "the dynamic programme has " << shape.transitions
-        << " transitions, above max_transitions = " << options_.max_transitions;
+        << " transitions, above max_transitions = " << max_transitions;
     return out.str();
   }
   return "";
 }
 
+}  // namespace
+
+std::string ChainSolver::unsuitable_reason(const csp::Problem& problem) const {
+  return refusal(shape_of(problem), options_.max_transitions);
+}
+
 void ChainSolver::solve_into(const csp::Problem& problem, std::span<const double> start,
                              const SolveContext& context, SolverResult& result) {
-  const std::string why = unsuitable_reason(problem);
-  if (!why.empty()) throw std::invalid_argument("chain: " + why);
-  Budget budget(context);
   const ChainShape shape = shape_of(problem);
+  if (const std::string why = refusal(shape, options_.max_transitions); !why.empty()) {
+    throw std::invalid_argument("chain: " + why);
+  }
+  Budget budget(context);
   const std::size_t n = problem.num_variables();
   const std::size_t cap = shape.cap;
   result.best.assign(start.begin(), start.end());

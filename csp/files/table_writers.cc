@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -12,11 +11,8 @@
 namespace sightline::csp {
 namespace {
 
-std::string exact(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
+// Numbers as they read back exactly (%.17g; every one written here is finite).
+std::string exact(double v) { return json_number(v); }
 
 // The weighted cost of every tuple of a constraint's scope, dense (expanded_table.h order).
 std::vector<double> dense_costs(const Problem& problem, const Constraint& c, const char* format) {

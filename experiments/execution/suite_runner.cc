@@ -167,7 +167,7 @@ void write_solution_csv(const std::string& path, const csp::Problem& problem,
   std::filesystem::rename(tmp, path);
 }
 
-void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& anytime_path,
+void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& file_base,
                  RunResult& r) {
   const LoadedSuiteProblem loaded = load_suite_problem(suite.problems[run.subject]);
   const SuiteToySolver& entry = suite.toy_solvers[run.solver];
@@ -208,11 +208,9 @@ void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& any
                                            cost_at(result, suite.toy_limits.time_limit_seconds, 0.1),
                                            cost_at(result, suite.toy_limits.time_limit_seconds, 0.5)};
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
-  if (!anytime_path.empty()) {
-    write_anytime_csv(anytime_path, result);
-    std::string solution = anytime_path;
-    solution.replace(solution.size() - std::string(".anytime.csv").size(), std::string::npos, ".solution.csv");
-    write_solution_csv(solution, *loaded.problem, result);
+  if (!file_base.empty()) {
+    write_anytime_csv(file_base + ".anytime.csv", result);
+    write_solution_csv(file_base + ".solution.csv", *loaded.problem, result);
   }
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;
@@ -286,21 +284,13 @@ std::string toy_answer_problem(const csp::Problem& problem, const csp::Assignmen
 }
 
 
-RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path) {
+RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& file_base) {
   RunResult r = skeleton(suite, run);
   try {
     if (run.kind == SuiteRun::Kind::kCamera) {
-      execute_camera(suite, run, trace_path, r);
+      execute_camera(suite, run, file_base.empty() ? "" : file_base + ".trace.csv", r);
     } else {
-      // The trajectory beside the trace's place: runs/<id>.anytime.csv.
-      std::string anytime = trace_path;
-      const std::string suffix = ".trace.csv";
-      if (anytime.size() > suffix.size() && anytime.ends_with(suffix)) {
-        anytime.replace(anytime.size() - suffix.size(), suffix.size(), ".anytime.csv");
-      } else {
-        anytime.clear();
-      }
-      execute_toy(suite, run, anytime, r);
+      execute_toy(suite, run, file_base, r);
     }
   } catch (const std::bad_alloc&) {
     r.status = "memout";
@@ -362,7 +352,7 @@ void write_run_file(const Suite& suite, const RunResult& result, const std::stri
 RunResult record_run_here(const Suite& suite, const SuiteRun& run, const std::string& out_dir,
                           const std::string& command_line) {
   const std::string base = run_file_base(out_dir, run.id);
-  RunResult r = execute_run(suite, run, base + ".trace.csv");
+  RunResult r = execute_run(suite, run, base);
   r.provenance = this_process_provenance();
   r.provenance.command_line = command_line;
   write_run_file(suite, r, base + ".result");

@@ -64,8 +64,10 @@ class RunAbandoned : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Runs one combination now (no files). Exceptions become status "failed".
-RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& trace_path);
+// Runs one combination now, writing its files beside `file_base` (runs/<id>): a camera run's
+// <base>.trace.csv, a problem run's <base>.anytime.csv and <base>.solution.csv; none when
+// empty. Exceptions become status "failed".
+RunResult execute_run(const Suite& suite, const SuiteRun& run, const std::string& file_base);
 
 // --- The run-file protocol, shared by every engine (the thread pool here, MPI) ---
 // OUT/runs/<id>: the path of a run's files without extension (".result", ".trace.csv").

@@ -378,12 +378,14 @@
     if (!shot || !panel || !panel.overlay) return;
     var c = panel.overlay, src = panel.canvas;
     var w = Math.max(1, src.clientWidth), h = Math.max(1, src.clientHeight);
-    c.style.left = src.offsetLeft + 'px';
-    c.style.top = src.offsetTop + 'px';
-    c.style.width = w + 'px';
-    c.style.height = h + 'px';
-    c.width = w;
-    c.height = h;
+    if (c.width !== w || c.height !== h) {  // laid out again only when the panel changed
+      c.style.left = src.offsetLeft + 'px';
+      c.style.top = src.offsetTop + 'px';
+      c.style.width = w + 'px';
+      c.style.height = h + 'px';
+      c.width = w;
+      c.height = h;
+    }
     var g = c.getContext('2d');
     g.clearRect(0, 0, w, h);
     var scale = shot.aspect / (w / h);  // the shot's image is this much wider than the panel

@@ -225,8 +225,8 @@ std::vector<std::pair<double, double>> read_anytime(const std::string& path) {
   return out;
 }
 
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
+// The q-quantile of values sorted ascending (+inf allowed), interpolated.
+double sorted_quantile(const std::vector<double>& v, double q) {
   const double at = q * static_cast<double>(v.size() - 1);
   const auto i = static_cast<std::size_t>(at);
   const double frac = at - static_cast<double>(i);
@@ -295,11 +295,12 @@ std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outco
           }
           at.push_back(cost);
         }
-        const double median = quantile(at, 0.5);
+        std::sort(at.begin(), at.end());
+        const double median = sorted_quantile(at, 0.5);
         if (!std::isfinite(median)) continue;
         line.points.emplace_back(t, median);
-        line.band_lo.push_back(quantile(at, 0.25));
-        line.band_hi.push_back(quantile(at, 0.75));  // +inf: drawn to the top
+        line.band_lo.push_back(sorted_quantile(at, 0.25));
+        line.band_hi.push_back(sorted_quantile(at, 0.75));  // +inf: drawn to the top
         y.lo = std::min(y.lo, line.band_lo.back());
         y.hi = std::max(y.hi, std::isfinite(line.band_hi.back()) ? line.band_hi.back() : median);
       }
@@ -336,14 +337,15 @@ std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outco
         << "' height='" << num(height) << "' fill='#fff'/><text x='" << num(left) << "' y='16' "
         << "font-size='12' fill='#222'>" << html_escape("Final cost over seeds: " + problem) << "</text>";
     for (std::size_t s = 0; s < solvers.size(); ++s) {
-      const auto& v = finals[{problem, solvers[s]}];
+      std::vector<double> v = finals[{problem, solvers[s]}];
+      std::sort(v.begin(), v.end());
       const double cy = top + row * (static_cast<double>(s) + 0.5);
       out << "<text x='" << num(left - 6) << "' y='" << num(cy + 3) << "' text-anchor='end' fill='#333'>"
           << html_escape(solvers[s]) << "</text>";
       if (v.empty()) continue;
       const char* colour = kPalette[s % (sizeof kPalette / sizeof *kPalette)];
-      const double q1 = quantile(v, 0.25), q2 = quantile(v, 0.5), q3 = quantile(v, 0.75);
-      const double mn = *std::min_element(v.begin(), v.end()), mx = *std::max_element(v.begin(), v.end());
+      const double q1 = sorted_quantile(v, 0.25), q2 = sorted_quantile(v, 0.5), q3 = sorted_quantile(v, 0.75);
+      const double mn = v.front(), mx = v.back();
       out << "<line x1='" << num(X(mn)) << "' x2='" << num(X(mx)) << "' y1='" << num(cy) << "' y2='"
           << num(cy) << "' stroke='" << colour << "'/><rect x='" << num(X(q1)) << "' y='" << num(cy - 5)
           << "' width='" << num(std::max(1.0, X(q3) - X(q1))) << "' height='10' fill='" << colour

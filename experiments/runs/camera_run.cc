@@ -1,9 +1,11 @@
 #include "sightline/experiments/runs/camera_run.h"
 
 #include <iomanip>
-
-#include "sightline/experiments/runs/edit_run.h"
 #include <sstream>
+
+#include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/control/camera_solvers.h"
+#include "sightline/experiments/runs/edit_run.h"
 
 namespace sightline::experiments {
 namespace {
@@ -50,6 +52,12 @@ MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfi
   // Camera positions are written with 6 decimals: allow for that rounding.
   input.max_smooth_step = max_step + 2e-6;
   return input;
+}
+
+std::string recommended_solver(const camera::Scene& scene) {
+  if (scene.shot()) return camera::kRecommendedCompositionSolver;
+  if (is_edit_scene(scene)) return camera::kDefaultEditSolver;
+  return camera::kRecommendedCameraSolver;
 }
 
 CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,

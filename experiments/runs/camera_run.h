@@ -40,6 +40,11 @@ struct CameraRun {
 CameraRun run_camera(const camera::Scene& scene, const camera::CameraProfile& profile,
                      const camera::ChaseCameraOptions& options);
 
+// The solver a run of `scene` uses when none is named (FORMATS.md "The follow command"):
+// the recommended composition solver for a scene with a shot: block, the editor's default
+// for a scene an editor films (edit_run.h), else the recommended camera solver.
+std::string recommended_solver(const camera::Scene& scene);
+
 // The metrics' view of a scene: its boxes, its movers' keyframes, the character's size, the camera's radius and
 // the controller's smooth-motion bound for one frame (CameraController::max_step).
 MetricsInput metrics_input(const camera::Scene& scene, const camera::CameraProfile& profile,

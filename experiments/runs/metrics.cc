@@ -70,7 +70,8 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
   int visible_frames = 0, current_occlusion = 0;
   double fraction_sum = 0;
   int body_half_frames = 0;
-  std::vector<double> cut_times, beyond_rules;  // when the cuts came, all and beyond the thesis rules
+  double last_cut = -std::numeric_limits<double>::infinity();
+  std::vector<double> beyond_rules;  // when the cuts beyond the thesis' rules came
   m.visible_fraction_min = 1;
   m.min_clearance = std::numeric_limits<double>::infinity();
   double height_sum = 0, distance_sum = 0, orientation_sum = 0, cost_sum = 0;
@@ -127,8 +128,8 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
     solve_us.push_back(r.solve_us);
     if (r.cut_reason.empty()) m.cut_reasons_known = false;
     if (r.cut) {
-      if (!cut_times.empty() && r.t - cut_times.back() < 1.0 - 1e-9) ++m.cuts_within_1s;
-      cut_times.push_back(r.t);
+      if (r.t - last_cut < 1.0 - 1e-9) ++m.cuts_within_1s;
+      last_cut = r.t;
       // The thesis' rules' cuts (leaving an enclosed area, backing up) are the profile's own.
       if (r.cut_reason != "left-enclosed-area" && r.cut_reason != "backed-up-to-obstacle") {
         beyond_rules.push_back(r.t);
