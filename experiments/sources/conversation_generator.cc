@@ -2,69 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <vector>
 
 #include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/sources/scripted_people.h"
 
 namespace sightline::experiments {
-namespace {
-
-// A small generator of our own (splitmix64), so a seed makes the same scene everywhere.
-class Draw {
- public:
-  explicit Draw(std::uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ull + 0x1234567ull) {}
-  double uniform(double lo, double hi) {
-    state_ += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = state_;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * static_cast<double>(z >> 11) / 9007199254740992.0;
-  }
-  int integer(int lo, int hi) { return std::min(hi, lo + static_cast<int>(uniform(0, hi - lo + 1))); }
-
- private:
-  std::uint64_t state_;
-};
-
-struct Key {
-  double t, x, z, yaw;
-};
-
-struct Person {
-  std::string name;
-  std::vector<Key> path;
-};
-
-std::string num(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", std::abs(v) < 5e-4 ? 0.0 : v);
-  return text;
-}
-
-double yaw_toward(double x0, double z0, double x1, double z1) {
-  return std::atan2(x1 - x0, z1 - z0) * 180 / M_PI;
-}
-
-// Points along a person's path every half metre (and at each key), for keeping pillars off.
-std::vector<std::pair<double, double>> path_points(const Person& p) {
-  std::vector<std::pair<double, double>> out;
-  for (std::size_t i = 0; i < p.path.size(); ++i) {
-    out.emplace_back(p.path[i].x, p.path[i].z);
-    if (i + 1 == p.path.size()) break;
-    const double dx = p.path[i + 1].x - p.path[i].x, dz = p.path[i + 1].z - p.path[i].z;
-    const int steps = static_cast<int>(std::hypot(dx, dz) / 0.5);
-    for (int s = 1; s < steps; ++s) {
-      out.emplace_back(p.path[i].x + dx * s / steps, p.path[i].z + dz * s / steps);
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string conversation_yaml(const ConversationOptions& o) {
   Draw draw(o.seed);
@@ -136,26 +81,8 @@ std::string conversation_yaml(const ConversationOptions& o) {
     }
     people = {a, b};
   }
-  // Pillars: 1-5, 0.3-0.8 m across, never within 1.3 m of anyone's path.
-  std::vector<std::pair<double, double>> keep_off;
-  for (const Person& p : people) {
-    for (const auto& q : path_points(p)) keep_off.push_back(q);
-  }
-  std::ostringstream boxes;
-  const int pillars = draw.integer(1, 5);
-  for (int i = 0, tries = 0; i < pillars && tries < 200; ++tries) {
-    const auto& near = keep_off[static_cast<std::size_t>(draw.integer(0, static_cast<int>(keep_off.size()) - 1))];
-    const double px = near.first + draw.uniform(-6, 6), pz = near.second + draw.uniform(-6, 6);
-    const double w = draw.uniform(0.3, 0.8) / 2, h = draw.uniform(2.5, 4);
-    const bool clear = std::all_of(keep_off.begin(), keep_off.end(), [&](const auto& q) {
-      const double dx = std::max(0.0, std::abs(q.first - px) - w), dz = std::max(0.0, std::abs(q.second - pz) - w);
-      return std::hypot(dx, dz) > 1.3;
-    });
-    if (!clear) continue;
-    boxes << "  - {name: pillar, min: [" << num(px - w) << ", 0, " << num(pz - w) << "], max: ["
-          << num(px + w) << ", " << num(h) << ", " << num(pz + w) << "]}\n";
-    ++i;
-  }
+  // Pillars: 1-5, never within 1.3 m of anyone's path.
+  const std::string pillars = pillars_yaml(draw, people, draw.integer(1, 5), 6, 1.3);
   // The script: lines of 1.5-7 s with pauses of 0-0.6 s; cat's entrance an action.
   std::ostringstream script;
   double t = draw.uniform(0.2, 0.8);
@@ -188,14 +115,8 @@ std::string conversation_yaml(const ConversationOptions& o) {
   out << "name: conversation-" << o.seed << "\n"
       << "description: a generated conversation of " << people.size() << " people, " << kLayouts[layout]
       << " (seed " << o.seed << ")\nframe_rate: 30\nactors:\n";
-  for (const Person& p : people) {
-    out << "  - name: " << p.name << "\n    trajectory:\n";
-    for (const Key& k : p.path) {
-      out << "      - {t: " << num(k.t) << ", position: [" << num(k.x) << ", 0, " << num(k.z)
-          << "], yaw: " << num(k.yaw) << "}\n";
-    }
-  }
-  if (!boxes.str().empty()) out << "boxes:\n" << boxes.str();
+  out << actors_yaml(people).substr(std::string("actors:\n").size());
+  if (!pillars.empty()) out << "boxes:\n" << pillars;
   out << "script:\n" << script.str();
   return out.str();
 }

@@ -11,6 +11,7 @@
 #include "sightline/experiments/runs/file_globs.h"
 #include "sightline/experiments/sources/agile_families.h"
 #include "sightline/experiments/sources/conversation_generator.h"
+#include "sightline/experiments/sources/tracking_shot_generator.h"
 #include "sightline/experiments/sources/scene_families.h"
 #include "sightline/experiments/sources/scene_generator.h"
 
@@ -109,6 +110,14 @@ void add_builtin_sources(SceneSources& sources) {
                               ConversationOptions o;
                               o.seed = seed;
                               return generate_conversation(o);
+                            }));
+  sources.add(seeded_source("tracking-shot",
+                            "people moving through a street, round a corner, across a square or "
+                            "circling, with a shot: block (a tracking shot)",
+                            [](std::uint64_t seed) {
+                              TrackingShotOptions o;
+                              o.seed = seed;
+                              return generate_tracking_shot(o);
                             }));
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sightline/csp/input_error.h"
+#include "sightline/csp/json_text.h"
 #include "sightline/domains/camera/trajectory.h"
 
 namespace sightline::camera {
@@ -14,9 +15,11 @@ constexpr double kClearanceProbe = 10;  // metres: how far evaluate() looks for 
 
 }  // namespace
 
-CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, double t)
+CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, double t,
+                                       Foresight foresight)
     : shot_(&shot),
       world_(std::make_unique<ShotWorld>(scene, t)),
+      foresight_(std::move(foresight)),
       problem_(std::make_unique<csp::Problem>("shot: " + scene.name())) {
   csp::Problem& p = *problem_;
   const Aabb& r = shot.region;
@@ -62,6 +65,35 @@ CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, dou
   auto clearance = std::make_unique<ShotClearanceConstraint>(*this);
   clearance->set_label("clearance");
   p.add_constraint(std::move(clearance));
+  for (std::size_t h = 0; h < foresight_.horizons.size(); ++h) {
+    if (!(foresight_.horizons[h] >= 0) || !(foresight_.weight > 0)) {
+      throw std::invalid_argument("foresight horizons must be >= 0 and its weight > 0");
+    }
+    futures_.push_back(std::make_unique<ShotWorld>(scene, t));
+    shifts_.push_back(Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+      const ShotProperty& property = shot.properties[i];
+      if ((property.kind != "framed" && property.kind != "visible") || property.range.hi <= 0) continue;
+      auto c = std::make_unique<ShotForesightConstraint>(
+          *this, i, *ShotPropertyKinds::global().find(property.kind), h);
+      c->set_label(property.describe() + " in " + csp::json_number(foresight_.horizons[h]) + " s");
+      p.add_constraint(std::move(c));
+    }
+  }
+  set_time(t);
+}
+
+void CompositionProblem::set_time(double t, double lead) {
+  world_->set_time(t, lead);
+  for (std::size_t h = 0; h < futures_.size(); ++h) {
+    futures_[h]->set_time(t, lead + foresight_.horizons[h]);
+    Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+    for (int w : wanted_) {
+      const auto i = static_cast<std::size_t>(w);
+      shift += futures_[h]->people()[i].aim - world_->people()[i].aim;
+    }
+    shifts_[h] = shift / static_cast<double>(wanted_.size());
+  }
 }
 
 CameraPose CompositionProblem::pose(std::span<const double> v) const {
@@ -85,17 +117,26 @@ csp::Assignment CompositionProblem::assignment(const CameraPose& pose) const {
 
 ShotEvaluation CompositionProblem::evaluate(const CameraPose& pose) const {
   ShotEvaluation e;
+  evaluate_into(pose, e);
+  return e;
+}
+
+void CompositionProblem::evaluate_into(const CameraPose& pose, ShotEvaluation& e) const {
   const std::size_t n = shot_->properties.size();
+  e.valid_pose = e.feasible = false;
+  e.satisfaction = e.cost = e.clearance = 0;
   e.measures.assign(n, std::numeric_limits<double>::quiet_NaN());
   e.scores.assign(n, 0.0);
+  e.why_infeasible.clear();
   const std::optional<View> view = View::of(pose);
   if (!view) {
     e.why_infeasible = "the pose has no view (its direction is vertical, or its lens is invalid)";
-    return e;
+    return;
   }
   e.valid_pose = true;
   double weights = 0, weighted = 0;
-  std::string first_hard;
+  const ShotProperty* first_hard = nullptr;
+  double first_hard_score = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const ShotProperty& property = shot_->properties[i];
     const ShotPropertyKind& kind = *ShotPropertyKinds::global().find(property.kind);
@@ -103,10 +144,9 @@ ShotEvaluation CompositionProblem::evaluate(const CameraPose& pose) const {
     e.measures[i] = kind.measure(property, context);
     e.scores[i] = satisfaction(e.measures[i], property.range, property.softness, kind.circular);
     if (property.hard) {
-      if (e.scores[i] < 1 && first_hard.empty()) {
-        first_hard = "the hard property " + property.describe() + " (line " +
-                     std::to_string(property.where.line) + ") scores " +
-                     std::to_string(e.scores[i]);
+      if (e.scores[i] < 1 && !first_hard) {
+        first_hard = &property;
+        first_hard_score = e.scores[i];
       }
     } else {
       weights += property.weight;
@@ -129,11 +169,12 @@ ShotEvaluation CompositionProblem::evaluate(const CameraPose& pose) const {
     e.why_infeasible = "the roll is outside the shot's";
   } else if (std::abs(pose.aspect - shot_->aspect) > 1e-9) {
     e.why_infeasible = "the aspect is not the shot's";
-  } else if (!first_hard.empty()) {
-    e.why_infeasible = first_hard;
+  } else if (first_hard) {
+    e.why_infeasible = "the hard property " + first_hard->describe() + " (line " +
+                       std::to_string(first_hard->where.line) + ") scores " +
+                       std::to_string(first_hard_score);
   }
   e.feasible = e.why_infeasible.empty();
-  return e;
 }
 
 const CompositionProblem* composition_of(const csp::Problem& problem) {
@@ -182,6 +223,29 @@ double ShotPropertyConstraint::score(const View& view) const {
 double ShotPropertyConstraint::violation(std::span<const double> values) const {
   const std::optional<View> view = View::of(owner_->pose(values));
   return view ? 1 - score(*view) : 1.0;
+}
+
+ShotForesightConstraint::ShotForesightConstraint(const CompositionProblem& owner,
+                                                 std::size_t index, const ShotPropertyKind& kind,
+                                                 std::size_t horizon)
+    : Constraint({0, 1, 2, 3, 4, 5, 6},
+                 owner.shot().properties[index].weight * owner.foresight().weight, false),
+      owner_(&owner),
+      property_(&owner.shot().properties[index]),
+      kind_(&kind),
+      targets_(owner.targets()[index].data()),
+      horizon_(horizon) {}
+
+double ShotForesightConstraint::violation(std::span<const double> values) const {
+  CameraPose pose = owner_->pose(values);
+  const Eigen::Vector3d& shift = owner_->future_shift(horizon_);
+  pose.position += shift;
+  pose.look_at += shift;
+  const std::optional<View> view = View::of(pose);
+  if (!view) return 1.0;
+  const MeasureContext context{*view, owner_->future(horizon_), targets_};
+  return 1 - satisfaction(kind_->measure(*property_, context), property_->range,
+                          property_->softness, kind_->circular);
 }
 
 ShotClearanceConstraint::ShotClearanceConstraint(const CompositionProblem& owner)

@@ -11,6 +11,14 @@
 //   person's box.
 // So a pose's cost is the sum of weight x (1 - satisfaction), FORMATS.md's cost, and every
 // solver of the registry composes shots. set_time() moves the people and movers.
+//
+// Foresight (a tracking camera's, off by default): each `framed` and `visible` property that
+// wants its people in the image is also scored at forecast times t + h (the people and
+// movers carried on at their velocities), the camera carried along with the wanted people's
+// mean displacement (ShotForesightConstraint, soft, weight x `weight` per horizon). A pose
+// whose sight lines a pillar or a bus is about to cross costs more than one that keeps its
+// people in view as they move on. evaluate() never counts these terms: it is FORMATS.md's
+// verdict on the shot at the current time.
 #pragma once
 
 #include <memory>
@@ -39,6 +47,11 @@ struct ShotEvaluation {
   std::string why_infeasible;    // empty when feasible: the first rule broken
 };
 
+struct Foresight {
+  std::vector<double> horizons;  // seconds ahead; empty: none
+  double weight = 0.5;           // of each forecast term, relative to its property's weight
+};
+
 class CompositionProblem {
  public:
   static constexpr csp::VariableId kX = 0, kY = 1, kZ = 2, kYaw = 3, kPitch = 4, kFov = 5,
@@ -46,16 +59,21 @@ class CompositionProblem {
 
   // `scene` and `shot` must outlive the problem. Throws csp::InputError (at the property)
   // when a property names someone the scene does not have.
-  CompositionProblem(const Scene& scene, const Shot& shot, double t);
-  CompositionProblem(const Scene&&, const Shot&, double) = delete;
+  CompositionProblem(const Scene& scene, const Shot& shot, double t, Foresight foresight = {});
+  CompositionProblem(const Scene&&, const Shot&, double, Foresight = {}) = delete;
 
   csp::Problem& problem() { return *problem_; }
   const csp::Problem& problem() const { return *problem_; }
   const Shot& shot() const { return *shot_; }
   const ShotWorld& world() const { return *world_; }
   // The people and movers at time t, or forecast `lead` seconds on at their velocity
-  // (ShotWorld::set_time). No allocation.
-  void set_time(double t, double lead = 0) { world_->set_time(t, lead); }
+  // (ShotWorld::set_time); the foresight's worlds `lead` + h on. No allocation.
+  void set_time(double t, double lead = 0);
+  // The foresight's horizons, their worlds and the camera's shift to each (the wanted
+  // people's mean displacement from world()).
+  const Foresight& foresight() const { return foresight_; }
+  const ShotWorld& future(std::size_t horizon) const { return *futures_[horizon]; }
+  const Eigen::Vector3d& future_shift(std::size_t horizon) const { return shifts_[horizon]; }
   // Each property's targets, as indices into world().people().
   const std::vector<std::vector<int>>& targets() const { return targets_; }
   // The people the shot wants in the image, in first-mention order: every target but those
@@ -68,10 +86,16 @@ class CompositionProblem {
   csp::Assignment assignment(const CameraPose& pose) const;
   // FORMATS.md's verdict on a pose, computed from the definitions (not from the CSP).
   ShotEvaluation evaluate(const CameraPose& pose) const;
+  // The same into `e`, reusing its storage (no allocation once it has held this shot's
+  // evaluation, unless the pose is infeasible and the message is written).
+  void evaluate_into(const CameraPose& pose, ShotEvaluation& e) const;
 
  private:
   const Shot* shot_;
   std::unique_ptr<ShotWorld> world_;
+  Foresight foresight_;
+  std::vector<std::unique_ptr<ShotWorld>> futures_;
+  std::vector<Eigen::Vector3d> shifts_;
   std::unique_ptr<csp::Problem> problem_;
   std::vector<std::vector<int>> targets_;
   std::vector<int> wanted_;
@@ -113,6 +137,24 @@ class ShotPropertyConstraint : public csp::Constraint {
   const ShotPropertyKind* kind_;
   const int* targets_;
   std::string kind_name_;
+};
+
+// A framed or visible property scored at a foresight horizon (see above): 1 - satisfaction
+// at the pose shifted by the horizon's shift, in the horizon's world.
+class ShotForesightConstraint : public csp::Constraint {
+ public:
+  ShotForesightConstraint(const CompositionProblem& owner, std::size_t index,
+                          const ShotPropertyKind& kind, std::size_t horizon);
+  std::string_view kind() const override { return "shot.foresight"; }
+  double query_cost() const override { return kind_->name == "visible" ? 27 : 0; }
+  double violation(std::span<const double> values) const override;
+
+ private:
+  const CompositionProblem* owner_;
+  const ShotProperty* property_;
+  const ShotPropertyKind* kind_;
+  const int* targets_;
+  std::size_t horizon_;
 };
 
 // Hard: max(0, clearance - distance to the nearest solid or person's box).

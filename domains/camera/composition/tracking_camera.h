@@ -2,17 +2,23 @@
 // "Shots"): the camera holds the composition while the people move, moving smoothly, and
 // cuts only when the shot cannot be kept.
 //
+// The shot it works to is the scene's, plus a `visible` property asking half the samples of
+// each person the shot wants in the image and names in no visible property: a person framed
+// but hidden behind someone else is not in the shot.
+//
 // Each frame: the shot's problem is set to where the people will be `lead_seconds` on
 // (their positions and velocities now: a forecast, as a game would make); the pose the
-// camera aims for is refined from the last one (shot-search without its global phase, a small budget), and
-// a global solve (the configured solver, a larger budget) replaces it when that pose is
-// infeasible or its satisfaction falls `resolve_drop` below the best the last global solve
-// found. The camera then follows the aimed-for pose through two first-order stages (the
-// aimed-for pose low-passed, then a spring toward that; time constant `smoothing` each),
-// bounded by max_speed; the look direction, fov and roll alike.
-// When the camera's own pose breaks the shot (a rule, or a visible property below its range)
-// while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there,
-// never twice within `min_shot_seconds`.
+// camera aims for is refined from the last one (shot-search without its global phase, a
+// small budget), and a global solve (the configured solver, a larger budget) replaces it
+// when that pose breaks a rule, loses someone the last global solve's pose kept (a framed
+// or visible property below its range), or its satisfaction falls `resolve_drop` below that
+// solve's. A global solve also weighs the shot's framed and visible properties at the
+// foresight's horizons (the camera carried along with the people), so it picks a pose that
+// the pillar or bus about to pass does not spoil. The camera follows the aimed-for pose
+// through two first-order stages (the aimed-for pose low-passed, then a spring toward that;
+// time constant `smoothing` each), bounded by max_speed; the look direction, fov and roll
+// alike. When the camera's own pose breaks the shot while the aimed-for pose keeps it and is
+// out of one frame's smooth reach, it cuts there, never twice within `min_shot_seconds`.
 #pragma once
 
 #include <memory>
@@ -35,6 +41,9 @@ struct TrackingOptions {
   double smoothing = 0.15;               // s: each of the two stages' time constant
   double min_shot_seconds = 1.0;         // never two cuts closer than this
   double lead_seconds = 0.3;             // the aimed-for pose is solved this far ahead
+  // A global solve also keeps the shot's people framed and visible this far beyond the
+  // lead, the camera carried along with them (CompositionProblem's foresight).
+  Foresight foresight{{0.5, 1.0}, 1.0};
   std::uint64_t seed = 1;
 };
 
@@ -56,19 +65,25 @@ class TrackingCamera : public CameraController {
   void solve_globally(std::uint64_t evaluations);
   void move_toward(double dt);
   void jump_to_aim();
-  bool hides_someone(const ShotEvaluation& e) const;
+  // Someone the shot wants framed and visible is not (a framed or visible property below 1).
+  bool loses_someone(const ShotEvaluation& e) const;
 
   const Scene* scene_;
   TrackingOptions options_;
-  CompositionProblem problem_;
+  Shot shot_;                    // the shot worked to (see working_shot in the .cc)
+  CompositionProblem problem_;   // shot_ now: the per-frame refinement
+  CompositionProblem ahead_;     // shot_ with foresight: the global solves
+  CompositionProblem verdict_;   // the scene's own shot: FORMATS.md's verdict
   std::unique_ptr<solvers::Solver> local_, global_;
   solvers::SolveContext local_context_, global_context_;
   solvers::SolverResult result_;
   csp::Assignment aim_;          // the pose aimed for, as the problem's assignment
   double aim_satisfaction_ = 0;  // of the last global solve
+  bool global_loses_ = false;    // the last global solve's pose loses someone too
   CameraPose pose_;              // where the camera is
   CameraPose filtered_;          // the aimed-for pose low-passed (look_at: a unit direction)
-  ShotEvaluation evaluation_;
+  ShotEvaluation evaluation_;        // verdict_'s, of pose_
+  ShotEvaluation aimed_, here_;      // problem_'s, of the aimed-for pose and of pose_
   CameraFrame frame_;
   double t_ = 0, last_cut_t_ = -1e9;
   bool started_ = false;
