@@ -1,6 +1,7 @@
 #include "sightline/domains/camera/composition/composition_problem.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "sightline/csp/input_error.h"
@@ -107,10 +108,15 @@ CameraPose CompositionProblem::pose(std::span<const double> v) const {
 }
 
 csp::Assignment CompositionProblem::assignment(const CameraPose& pose) const {
+  const std::array<double, 7> a = pose_values(pose);
+  return csp::Assignment(a.begin(), a.end());
+}
+
+std::array<double, 7> CompositionProblem::pose_values(const CameraPose& pose) const {
   const Eigen::Vector3d d = (pose.look_at - pose.position).normalized();
-  csp::Assignment a{pose.position.x(), pose.position.y(), pose.position.z(),
-                    std::atan2(d.x(), d.z()) * kDegrees,
-                    std::asin(std::clamp(d.y(), -1.0, 1.0)) * kDegrees, pose.fov, pose.roll};
+  std::array<double, 7> a{pose.position.x(), pose.position.y(), pose.position.z(),
+                          std::atan2(d.x(), d.z()) * kDegrees,
+                          std::asin(std::clamp(d.y(), -1.0, 1.0)) * kDegrees, pose.fov, pose.roll};
   for (csp::VariableId v = 0; v < 7; ++v) a[v] = problem_->domain(v).clamp(a[v]);
   return a;
 }
@@ -191,7 +197,7 @@ void fill_frame(const CompositionProblem& problem, const CameraPose& pose, bool 
   frame.position = pose.position;
   frame.target = pose.look_at;
   frame.solver_target = aimed_for;
-  frame.score = problem.problem().score(problem.assignment(pose));
+  frame.score = problem.problem().score(problem.pose_values(pose));
   frame.look_at_visible = feasible;
   frame.fov = pose.fov;
   frame.roll = pose.roll;

@@ -21,6 +21,7 @@
 // verdict on the shot at the current time.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <span>
 #include <string>
@@ -84,6 +85,8 @@ class CompositionProblem {
   CameraPose pose(std::span<const double> values) const;
   // The assignment of a pose (yaw and pitch of its view direction; clamped to the domains).
   csp::Assignment assignment(const CameraPose& pose) const;
+  // The same values without allocating.
+  std::array<double, 7> pose_values(const CameraPose& pose) const;
   // FORMATS.md's verdict on a pose, computed from the definitions (not from the CSP).
   ShotEvaluation evaluate(const CameraPose& pose) const;
   // The same into `e`, reusing its storage (no allocation once it has held this shot's

@@ -3,8 +3,10 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
-#include <random>
 #include <cmath>
+#include <iterator>
+#include <random>
+#include <span>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -13,12 +15,37 @@
 #include "sightline/domains/camera/composition/toric_framing.h"
 
 namespace sightline::camera {
+namespace shot_search_detail {
+
+using Point = std::array<double, 7>;  // x, y, z, yaw offset, pitch offset, fov, roll
+
+// Where the properties of person `t` ask the camera to stand: (distance, bearings, elevations).
+struct Vantage {
+  double distance = 4;
+  std::vector<double> bearings;    // degrees, world yaw of (camera - aim)
+  std::vector<double> elevations;  // degrees
+};
+
+}  // namespace shot_search_detail
+
+// What a solve works in, kept between solves so a tracking camera's frames allocate nothing
+// once the vectors have grown.
+struct ShotSearchScratch {
+  std::vector<std::pair<csp::Score, shot_search_detail::Point>> candidates;
+  std::vector<std::pair<int, shot_search_detail::Vantage>> vantages;
+  shot_search_detail::Vantage group;
+  std::vector<double> bearings;
+  std::vector<int> targets;
+  csp::Assignment values;
+};
+
 namespace {
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 constexpr double kRadians = 3.14159265358979323846 / 180.0;
 constexpr int kDims = 7;  // x, y, z, yaw offset, pitch offset, fov, roll
-using Point = std::array<double, kDims>;
+using shot_search_detail::Point;
+using shot_search_detail::Vantage;
 
 double halton(std::uint64_t index, std::uint64_t base) {
   double f = 1, r = 0;
@@ -40,14 +67,15 @@ double mid(const ValueRange& r, double fallback) {
 // The search's view of one problem: the targets' centre, and the point -> assignment map.
 class Framing {
  public:
-  Framing(const csp::Problem& problem, const CompositionProblem& owner)
-      : problem_(&problem), owner_(&owner) {
+  // `targets` and `values` are storage kept between solves.
+  Framing(const csp::Problem& problem, const CompositionProblem& owner, std::vector<int>& targets,
+          csp::Assignment& values)
+      : problem_(&problem), owner_(&owner), targets_(targets), values_(values) {
     const auto& people = owner.world().people();
-    std::vector<int> seen = owner.wanted();
+    targets_ = owner.wanted();
     centre_.setZero();
-    for (int t : seen) centre_ += people[static_cast<std::size_t>(t)].aim;
-    centre_ /= static_cast<double>(std::max<std::size_t>(1, seen.size()));
-    targets_ = std::move(seen);
+    for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
+    centre_ /= static_cast<double>(std::max<std::size_t>(1, targets_.size()));
     values_.resize(kDims);
   }
   const Eigen::Vector3d& centre() const { return centre_; }
@@ -121,21 +149,16 @@ class Framing {
   const csp::Problem* problem_;
   const CompositionProblem* owner_;
   Eigen::Vector3d centre_;
-  std::vector<int> targets_;
-  csp::Assignment values_;
+  std::vector<int>& targets_;
+  csp::Assignment& values_;
 };
 
-// Where the properties of person `t` ask the camera to stand: (distance, bearings, elevations).
-struct Vantage {
-  double distance = 4;
-  std::vector<double> bearings;    // degrees, world yaw of (camera - aim)
-  std::vector<double> elevations;  // degrees
-};
-
-Vantage vantage_of(const CompositionProblem& owner, int t, double fov) {
+void vantage_into(const CompositionProblem& owner, int t, double fov, Vantage& v) {
   const Shot& shot = owner.shot();
   const PersonAtTime& person = owner.world().people()[static_cast<std::size_t>(t)];
-  Vantage v;
+  v.distance = 4;
+  v.bearings.clear();
+  v.elevations.clear();
   const double tan_half = std::tan(fov * kRadians / 2);
   for (std::size_t i = 0; i < shot.properties.size(); ++i) {
     const ShotProperty& p = shot.properties[i];
@@ -169,7 +192,6 @@ Vantage vantage_of(const CompositionProblem& owner, int t, double fov) {
       }
     }
   }
-  return v;
 }
 
 Eigen::Vector3d from_bearing(double bearing, double elevation) {
@@ -196,6 +218,9 @@ const solvers::OptionSchema<ShotSearch::Options>& ShotSearch::Options::schema() 
 
 std::string ShotSearch::Options::validate() const { return ""; }
 
+ShotSearch::ShotSearch(std::string name, Options options) : name_(std::move(name)), options_(options) {}
+ShotSearch::~ShotSearch() = default;
+
 std::string ShotSearch::unsuitable_reason(const csp::Problem& problem) const {
   return composition_of(problem) ? "" : "needs a composition problem (a scene's shot: block)";
 }
@@ -205,7 +230,17 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   const CompositionProblem* owner = composition_of(problem);
   if (!owner) throw std::invalid_argument(name_ + ": " + unsuitable_reason(problem));
   solvers::Budget budget(context.limits, 1);
-  Framing framing(problem, *owner);
+  if (!scratch_) {
+    // Room for the most candidates and angles a global solve makes with several people, so
+    // the vectors stop growing after the first solves.
+    scratch_ = std::make_unique<ShotSearchScratch>();
+    scratch_->candidates.reserve(1024);
+    scratch_->bearings.reserve(64);
+    scratch_->group.bearings.reserve(64);
+    scratch_->group.elevations.reserve(64);
+  }
+  ShotSearchScratch& scratch = *scratch_;
+  Framing framing(problem, *owner, scratch.targets, scratch.values);
   const Shot& shot = owner->shot();
   auto clamp = [&](Point& x) {
     for (int k : {0, 1, 2, 5, 6}) x[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x[k]);
@@ -215,7 +250,8 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   std::uint64_t evaluations = 0, iterations = 0;
 
   // 1-2. Candidates, each aimed and scored.
-  std::vector<std::pair<csp::Score, Point>> candidates;
+  auto& candidates = scratch.candidates;
+  candidates.clear();
   // A candidate at p aimed at the targets (and, when several are wanted, a second one aimed
   // at `subject` alone: a shot that cannot hold them all may do best on one).
   auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d* subject = nullptr) {
@@ -245,8 +281,13 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     ++evaluations;
   }
   // Two subjects at screen points: the exact two-subject poses (toric_framing.h), coarsely.
-  ToricFraming toric("toric", ToricFraming::Options{16, 32});
-  if (options_.global && toric.unsuitable_reason(problem).empty()) {
+  if (options_.global && !toric_) toric_ = std::make_unique<ToricFraming>("toric", ToricFraming::Options{16, 32});
+  if (options_.global && toric_checked_ != &problem) {  // its reason is a string: asked once a problem
+    toric_checked_ = &problem;
+    toric_suits_ = toric_->unsuitable_reason(problem).empty();
+  }
+  if (options_.global && toric_suits_) {
+    ToricFraming& toric = *toric_;
     solvers::SolveContext coarse;
     coarse.want_breakdown = false;
     if (context.limits.time_limit_seconds > 0) {
@@ -264,37 +305,47 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       ++evaluations;
     }
   }
-  std::vector<std::pair<int, Vantage>> vantages;
-  for (int t : framing.targets()) vantages.emplace_back(t, vantage_of(*owner, t, fov));
-  // The group: centred on the targets' centre, far enough to hold them all.
-  Vantage group;
-  double radius = 0;
-  for (int t : framing.targets()) {
-    const PersonAtTime& person = owner->world().people()[static_cast<std::size_t>(t)];
-    radius = std::max(radius, (person.aim - framing.centre()).norm() + person.body.size().y() / 2);
-  }
-  group.distance = radius / std::tan(fov * kRadians / 2) * 1.2 + 1;
-  for (const auto& [t, v] : vantages) {
-    group.bearings.insert(group.bearings.end(), v.bearings.begin(), v.bearings.end());
-    group.elevations.insert(group.elevations.end(), v.elevations.begin(), v.elevations.end());
-  }
   // Around an aim point at the vantage's distance (and 15% nearer and farther), bearings
   // (each with its neighbours 15 degrees off) and elevations.
-  auto around = [&](const Eigen::Vector3d& aim, Vantage v, const Eigen::Vector3d* subject) {
-    std::vector<double> bearings;
+  auto around = [&](const Eigen::Vector3d& aim, const Vantage& v, const Eigen::Vector3d* subject) {
+    static constexpr double kAllBearings[] = {0, 45, 90, 135, 180, 225, 270, 315};
+    static constexpr double kTwoElevations[] = {5, 20};
+    std::vector<double>& bearings = scratch.bearings;
+    bearings.clear();
     if (v.bearings.empty()) {
-      bearings = {0, 45, 90, 135, 180, 225, 270, 315};
+      bearings.assign(std::begin(kAllBearings), std::end(kAllBearings));
     } else {
       for (double b : v.bearings) bearings.insert(bearings.end(), {b, b - 15, b + 15});
     }
-    if (v.elevations.empty()) v.elevations = {5, 20};
+    const std::span<const double> elevations =
+        v.elevations.empty() ? std::span<const double>(kTwoElevations) : std::span<const double>(v.elevations);
     for (double b : bearings) {
-      for (double e : v.elevations) {
+      for (double e : elevations) {
         for (double scale : {1.0, 0.85, 1.2}) add(aim + scale * v.distance * from_bearing(b, e), subject);
       }
     }
   };
   if (options_.global) {
+    auto& vantages = scratch.vantages;
+    vantages.resize(framing.targets().size());
+    for (std::size_t i = 0; i < vantages.size(); ++i) {
+      vantages[i].first = framing.targets()[i];
+      vantage_into(*owner, vantages[i].first, fov, vantages[i].second);
+    }
+    // The group: centred on the targets' centre, far enough to hold them all.
+    Vantage& group = scratch.group;
+    group.bearings.clear();
+    group.elevations.clear();
+    double radius = 0;
+    for (int t : framing.targets()) {
+      const PersonAtTime& person = owner->world().people()[static_cast<std::size_t>(t)];
+      radius = std::max(radius, (person.aim - framing.centre()).norm() + person.body.size().y() / 2);
+    }
+    group.distance = radius / std::tan(fov * kRadians / 2) * 1.2 + 1;
+    for (const auto& [t, v] : vantages) {
+      group.bearings.insert(group.bearings.end(), v.bearings.begin(), v.bearings.end());
+      group.elevations.insert(group.elevations.end(), v.elevations.begin(), v.elevations.end());
+    }
     for (const auto& [t, v] : vantages) {
       const Eigen::Vector3d& aim = owner->world().people()[static_cast<std::size_t>(t)].aim;
       around(aim, v, &aim);
@@ -308,8 +359,13 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     add(region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5))
                          .cwiseProduct(region.max - region.min));
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const auto& a, const auto& b) { return a.first.better_than(b.first); });
+  // Best first, ties in the order added: an insertion sort in place (std::stable_sort takes
+  // a buffer from the heap; there are at most a few hundred candidates).
+  for (std::size_t i = 1; i < candidates.size(); ++i) {
+    for (std::size_t j = i; j > 0 && candidates[j].first.better_than(candidates[j - 1].first); --j) {
+      std::swap(candidates[j], candidates[j - 1]);
+    }
+  }
 
   csp::Score best = candidates.front().first;
   Point best_x = candidates.front().second;

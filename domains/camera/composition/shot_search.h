@@ -19,12 +19,16 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "sightline/solvers/options.h"
 #include "sightline/solvers/solver.h"
 
 namespace sightline::camera {
+
+struct ShotSearchScratch;
+class ToricFraming;
 
 class ShotSearch : public solvers::Solver {
  public:
@@ -40,7 +44,8 @@ class ShotSearch : public solvers::Solver {
     std::string validate() const;
   };
 
-  ShotSearch(std::string name, Options options) : name_(std::move(name)), options_(options) {}
+  ShotSearch(std::string name, Options options);
+  ~ShotSearch() override;
   std::string name() const override { return name_; }
   std::string unsuitable_reason(const csp::Problem& problem) const override;
   void solve_into(const csp::Problem& problem, std::span<const double> start,
@@ -50,6 +55,10 @@ class ShotSearch : public solvers::Solver {
   std::string name_;
   Options options_;
   solvers::SolverResult toric_result_;  // reused between solves
+  std::unique_ptr<ToricFraming> toric_;  // made by the first global solve
+  const csp::Problem* toric_checked_ = nullptr;  // the problem toric_suits_ is about
+  bool toric_suits_ = false;
+  std::unique_ptr<ShotSearchScratch> scratch_;
 };
 
 }  // namespace sightline::camera
