@@ -12,6 +12,7 @@
 #include "sightline/domains/camera/camera_problem.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/sources/conversation_generator.h"
+#include "sightline/experiments/sources/tracking_shot_generator.h"
 #include "sightline/experiments/sources/shot_problems.h"
 
 namespace sightline::apps {
@@ -121,6 +122,17 @@ void check_scene(const std::string& path) {
             << plural(problem.problem().num_constraints(), "constraint") << "\n";
 }
 
+// A generated scene's text to `out`, or to standard output when it is empty.
+void write_scene_text(const std::string& text, const std::string& out) {
+  if (out.empty()) {
+    std::cout << text;
+    return;
+  }
+  std::ofstream file(out);
+  file << text;
+  if (!file) throw std::runtime_error("cannot write " + out);
+}
+
 }  // namespace
 
 void add_scene_command(CLI::App& app) {
@@ -139,16 +151,7 @@ void add_scene_command(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   problem->add_option("seed", *seed, "the problem's seed (>= 1)")->required()->check(CLI::PositiveNumber);
   problem->add_option("--out", *out, "write it here (default: standard output)");
-  problem->callback([seed, out] {
-    const std::string text = experiments::shot_problem_yaml(*seed);
-    if (out->empty()) {
-      std::cout << text;
-      return;
-    }
-    std::ofstream file(*out);
-    file << text;
-    if (!file) throw std::runtime_error("cannot write " + *out);
-  });
+  problem->callback([seed, out] { write_scene_text(experiments::shot_problem_yaml(*seed), *out); });
   CLI::App* talk = scene->add_subcommand(
       "conversation", "write the generated conversation SEED (actors and a script, for the "
                       "editor: experiments/sources/conversation_generator.h) as a scene file");
@@ -161,15 +164,23 @@ void add_scene_command(CLI::App& app) {
       ->check(CLI::Range(0, 3));
   talk->add_option("--out", *talk_out, "write it here (default: standard output)");
   talk->callback([options, talk_out] {
-    const std::string text = experiments::conversation_yaml(*options);
     experiments::generate_conversation(*options);  // valid by the scene reader's rules
-    if (talk_out->empty()) {
-      std::cout << text;
-      return;
-    }
-    std::ofstream file(*talk_out);
-    file << text;
-    if (!file) throw std::runtime_error("cannot write " + *talk_out);
+    write_scene_text(experiments::conversation_yaml(*options), *talk_out);
+  });
+  CLI::App* tracking = scene->add_subcommand(
+      "tracking-shot", "write the generated tracking shot SEED (people moving and a shot: "
+                       "block: experiments/sources/tracking_shot_generator.h) as a scene file");
+  auto shot = std::make_shared<experiments::TrackingShotOptions>();
+  auto shot_out = std::make_shared<std::string>();
+  tracking->add_option("seed", shot->seed, "the shot's seed (>= 1)")->required()->check(CLI::PositiveNumber);
+  tracking->add_option("--seconds", shot->seconds, "its length (default 12)")->check(CLI::Range(4.0, 600.0));
+  tracking->add_option("--layout", shot->layout,
+                       "0 street, 1 corner chase, 2 crossing, 3 circling (default: by seed)")
+      ->check(CLI::Range(0, 3));
+  tracking->add_option("--out", *shot_out, "write it here (default: standard output)");
+  tracking->callback([shot, shot_out] {
+    experiments::generate_tracking_shot(*shot);  // valid by the scene reader's rules
+    write_scene_text(experiments::tracking_shot_yaml(*shot), *shot_out);
   });
 }
 
