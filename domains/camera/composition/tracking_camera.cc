@@ -84,6 +84,79 @@ void TrackingCamera::solve_globally(std::uint64_t evaluations) {
   global_loses_ = loses_someone(aimed_);
 }
 
+Eigen::Vector3d TrackingCamera::wanted_centre() const {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int w : ahead_.wanted()) c += ahead_.world().people()[static_cast<std::size_t>(w)].aim;
+  return c / static_cast<double>(ahead_.wanted().size());
+}
+
+void TrackingCamera::sweep_pose(std::size_t i, const Eigen::Vector3d& centre, CameraPose& out) const {
+  // 16 bearings x 3 elevations x 3 distances (the aim's, 0.7 and 1.4 times) round the
+  // people, then 48 Halton points of the region; each looking at the people's centre with
+  // the aim's lens.
+  const CameraPose aim = problem_.pose(aim_);
+  const double d0 = std::max(1.0, (aim.position - centre).norm());
+  const Aabb& region = shot_.region;
+  Eigen::Vector3d p;
+  if (i < 144) {
+    static constexpr double kElevations[3] = {10, 30, 55}, kScales[3] = {0.7, 1.0, 1.4};
+    const double bearing = (i % 16) * 22.5 * M_PI / 180, elevation = kElevations[(i / 16) % 3] * M_PI / 180;
+    const double d = d0 * kScales[i / 48];
+    p = centre + d * Eigen::Vector3d(std::cos(elevation) * std::sin(bearing), std::sin(elevation),
+                                     std::cos(elevation) * std::cos(bearing));
+  } else {
+    auto halton = [](std::size_t k, std::size_t b) {
+      double f = 1, r = 0;
+      for (; k > 0; k /= b) {
+        f /= static_cast<double>(b);
+        r += f * static_cast<double>(k % b);
+      }
+      return r;
+    };
+    const std::size_t k = i - 143;
+    p = region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5)).cwiseProduct(region.max - region.min);
+  }
+  out.position = p.cwiseMax(region.min).cwiseMin(region.max);
+  out.look_at = centre;
+  out.fov = aim.fov;
+  out.roll = aim.roll;
+  out.aspect = aim.aspect;
+}
+
+void TrackingCamera::sweep_slice(std::size_t count) {
+  constexpr std::size_t kCandidates = 144 + 48;  // sweep_pose's
+  const Eigen::Vector3d centre = wanted_centre();
+  CameraPose candidate;
+  for (std::size_t n = 0; n < count; ++n, ++sweep_cursor_) {
+    if (sweep_cursor_ == kCandidates) {  // a sweep done: its best is ready
+      sweep_cursor_ = 0;
+      ready_ = has_best_;
+      ready_offset_ = best_offset_;
+      has_best_ = false;
+    }
+    sweep_pose(sweep_cursor_, centre, candidate);
+    const csp::Score score = ahead_.problem().score(ahead_.pose_values(candidate));
+    if (!has_best_ || score.better_than(best_score_)) {
+      has_best_ = true;
+      best_score_ = score;
+      best_offset_ = candidate.position - centre;
+    }
+  }
+}
+
+bool TrackingCamera::take_sweep_best() {
+  if (!ready_) return false;
+  const Eigen::Vector3d centre = wanted_centre();
+  CameraPose candidate = problem_.pose(aim_);
+  candidate.position = (centre + ready_offset_).cwiseMax(shot_.region.min).cwiseMin(shot_.region.max);
+  candidate.look_at = centre;
+  const auto values = ahead_.pose_values(candidate);
+  const csp::Score there = ahead_.problem().score(values);
+  if (!there.better_than(ahead_.problem().score(aim_))) return false;
+  std::copy(values.begin(), values.end(), aim_.begin());
+  return true;
+}
+
 bool TrackingCamera::loses_someone(const ShotEvaluation& e) const {
   for (std::size_t i = 0; i < e.scores.size(); ++i) {
     const ShotProperty& p = problem_.shot().properties[i];
@@ -137,16 +210,28 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     last_cut_t_ = t_;  // the film starts a shot: no cut within its minimum length either
   } else {
     // The pose to aim for is solved where the people will be when the camera gets there
-    // (the two stages lag about 2 x smoothing), forecast from their velocities.
+    // (the two stages lag about 2 x smoothing), forecast from their velocities; a slice of
+    // the background sweep is scored there too.
     problem_.set_time(t_, options_.lead_seconds);
     ahead_.set_time(t_, options_.lead_seconds);
+    sweep_slice(static_cast<std::size_t>(options_.sweep_per_frame));
     local_->solve_into(problem_.problem(), aim_, local_context_, result_);
     aim_ = result_.best;
     problem_.evaluate_into(problem_.pose(aim_), aimed_);
-    // A global solve when the aimed-for pose breaks a rule, loses someone the last global
-    // solve's pose kept, or has fallen well below it.
-    if (!aimed_.feasible || (loses_someone(aimed_) && !global_loses_) ||
-        aimed_.satisfaction < aim_satisfaction_ - options_.resolve_drop) {
+    // When the aimed-for pose breaks a rule: a global solve. When it loses someone or falls
+    // well below the last global pose: the last sweep's best if it does better with
+    // foresight; else, if that global pose kept everyone (or the fall), a global solve if
+    // one is due (they are rationed).
+    resolves_ = std::min(1.0, resolves_ + options_.resolves_per_second * dt);
+    const bool loses = loses_someone(aimed_);
+    const bool dropped = aimed_.satisfaction < aim_satisfaction_ - options_.resolve_drop;
+    if (!aimed_.feasible) {
+      solve_globally(options_.resolve_evaluations);
+    } else if ((loses || dropped) && take_sweep_best()) {
+      problem_.evaluate_into(problem_.pose(aim_), aimed_);
+      aim_satisfaction_ = aimed_.satisfaction;
+    } else if (((loses && !global_loses_) || dropped) && resolves_ >= 1) {
+      resolves_ -= 1;
       solve_globally(options_.resolve_evaluations);
     } else {
       aim_satisfaction_ = std::max(aim_satisfaction_ * 0.98, aimed_.satisfaction);
