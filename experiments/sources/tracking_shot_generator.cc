@@ -142,13 +142,14 @@ Layout corner_chase(Draw& draw, const Turn& turn, double T) {
   return out;
 }
 
-// 2: three crossing a square.
+// 2: three or four crossing a square.
 Layout crossing(Draw& draw, const Turn& turn, double T) {
   Layout out;
-  const char* names[] = {"ann", "ben", "cal"};
+  const char* names[] = {"ann", "ben", "cal", "dee"};
   const double R = draw.uniform(7, 9), a0 = draw.uniform(0, 2 * M_PI);
-  for (int i = 0; i < 3; ++i) {
-    const double a = a0 + i * 2 * M_PI / 3 + draw.uniform(-0.4, 0.4);
+  const int count = draw.chance(0.4) ? 4 : 3;
+  for (int i = 0; i < count; ++i) {
+    const double a = a0 + i * 2 * M_PI / count + draw.uniform(-0.4, 0.4);
     const double b = a + M_PI + draw.uniform(-0.7, 0.7);
     const double u0 = R * std::cos(a), w0 = R * std::sin(a), u1 = R * std::cos(b), w1 = R * std::sin(b);
     out.people.push_back({names[i], {turn.key(0, u0, w0, u1 - u0, w1 - w0), turn.key(T, u1, w1, u1 - u0, w1 - w0)}});
@@ -173,15 +174,13 @@ Layout crossing(Draw& draw, const Turn& turn, double T) {
   }
   out.shot = "  fov: [40, 70]\n" + region(turn, -R - 7, -R - 7, R + 7, R + 7, 1, 8) +
              "  properties:\n"
-             "    - {kind: framed, target: ann, rect: [0.05, 0.05, 0.95, 0.95]}\n"
-             "    - {kind: framed, target: ben, rect: [0.05, 0.05, 0.95, 0.95]}\n"
-             "    - {kind: framed, target: cal, rect: [0.05, 0.05, 0.95, 0.95]}\n"
-             "    - {kind: visible, target: ann, range: [0.6, 1]}\n"
-             "    - {kind: visible, target: ben, range: [0.6, 1]}\n"
-             "    - {kind: visible, target: cal, range: [0.6, 1]}\n"
              "    - {kind: angle_vertical, target: ben, range: [15, 40]}\n"
              "    - {kind: size, target: ben, range: [0.15, 0.35]}\n";
-  out.description = "three people crossing a square, each their own way; a group shot";
+  for (const Person& p : out.people) {
+    out.shot += "    - {kind: framed, target: " + p.name + ", rect: [0.05, 0.05, 0.95, 0.95]}\n"
+                "    - {kind: visible, target: " + p.name + ", range: [0.6, 1]}\n";
+  }
+  out.description = std::string(count == 4 ? "four" : "three") + " people crossing a square, each their own way; a group shot";
   return out;
 }
 

@@ -6,8 +6,8 @@
 //     side, sometimes starting from rest once the shot is under way; a two-shot from the
 //     street side;
 //   1 one chasing another round the corner of a building (an L-shaped run); a two-shot;
-//   2 three people crossing a square, each their own way, among a fountain, kiosks and
-//     lamps; a group shot;
+//   2 three or four people crossing a square, each their own way, among a fountain,
+//     kiosks and lamps; a group shot;
 //   3 one circling another who turns to keep facing them, among pillars; an
 //     over-the-shoulder shot.
 // Obstacles never touch a path; the scene is written as YAML text and read by the scene
