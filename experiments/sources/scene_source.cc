@@ -63,6 +63,17 @@ SceneSourceInfo seeded_source(std::string name, std::string description,
 
 namespace {
 
+// A generator taking an options struct, made a function of the seed (its other options at
+// their defaults).
+template <class Options, class Scene>
+std::function<camera::Scene(std::uint64_t)> with_seed(Scene (*generate)(const Options&)) {
+  return [generate](std::uint64_t seed) {
+    Options o;
+    o.seed = seed;
+    return generate(o);
+  };
+}
+
 void add_builtin_sources(SceneSources& sources) {
   SceneSourceInfo files;
   files.name = "files";
@@ -76,28 +87,13 @@ void add_builtin_sources(SceneSources& sources) {
                        [family](std::uint64_t seed) { return generate_family(family, seed); }));
   }
   sources.add(seeded_source("pillar-forest", "pillars scattered round a winding walk",
-                     [](std::uint64_t seed) {
-                       GeneratedSceneOptions o;
-                       o.seed = seed;
-                       return generate_pillar_forest(o);
-                     }));
-  sources.add(seeded_source("city", "a city of blocks and streets", [](std::uint64_t seed) {
-    GeneratedSceneOptions o;
-    o.seed = seed;
-    return generate_city(o);
-  }));
+                            with_seed<GeneratedSceneOptions>(generate_pillar_forest)));
+  sources.add(seeded_source("city", "a city of blocks and streets",
+                            with_seed<GeneratedSceneOptions>(generate_city)));
   sources.add(seeded_source("switchback", "a walk that doubles back between walls",
-                     [](std::uint64_t seed) {
-                       SwitchbackOptions o;
-                       o.seed = seed;
-                       return generate_switchback(o);
-                     }));
+                            with_seed<SwitchbackOptions>(generate_switchback)));
   sources.add(seeded_source("crossings", "people crossing between camera and character",
-                     [](std::uint64_t seed) {
-                       CrossingOptions o;
-                       o.seed = seed;
-                       return generate_crossings(o);
-                     }));
+                            with_seed<CrossingOptions>(generate_crossings)));
   for (const AgileFamily family : all_agile_families()) {
     sources.add(seeded_source(to_string(family), "the seeded agile family " + to_string(family) +
                                                      " (experiments/sources/agile_families.h)",
@@ -106,19 +102,11 @@ void add_builtin_sources(SceneSources& sources) {
   sources.add(seeded_source("conversation",
                             "two or three people talking (standing, walking, circling, one "
                             "coming in), with a script: edited, not chased",
-                            [](std::uint64_t seed) {
-                              ConversationOptions o;
-                              o.seed = seed;
-                              return generate_conversation(o);
-                            }));
+                            with_seed<ConversationOptions>(generate_conversation)));
   sources.add(seeded_source("tracking-shot",
                             "people moving through a street, round a corner, across a square or "
                             "circling, with a shot: block (a tracking shot)",
-                            [](std::uint64_t seed) {
-                              TrackingShotOptions o;
-                              o.seed = seed;
-                              return generate_tracking_shot(o);
-                            }));
+                            with_seed<TrackingShotOptions>(generate_tracking_shot)));
 }
 
 }  // namespace
