@@ -1,8 +1,8 @@
 // `sightline convert PROBLEM --to wcsp|cfn|yaml [--out FILE] [--colours K]`: a model in
 // another format, for other tools. `wcsp`: toulbar2's format (csp/files/wcsp_writer.h):
 // every discrete model with integer weighted costs, kinds other than tables and
-// all_different as cost tables. `cfn`: toulbar2's JSON format, decimal costs, every
-// constraint a dense cost table; `yaml`: this project's problem file, every constraint a
+// all_different as cost tables. `cfn`: toulbar2's JSON format, decimal costs, values named
+// by their labels, every constraint a dense cost table; `yaml`: this project's problem file, every constraint a
 // `table` (csp/files/table_writers.h).
 #include <fstream>
 #include <iostream>
@@ -36,12 +36,13 @@ void add_convert_command(CLI::App& app) {
   cmd->add_option("--colours", args->load.colours, "number of colours, for a DIMACS graph (.col)")
       ->check(CLI::Range(1, 1 << 20));
   cmd->callback([args] {
-    const std::unique_ptr<csp::Problem> problem = load_problem(args->file, args->load);
+    const csp::LoadedProblem model = load_model(args->file, args->load);
+    const csp::Problem& problem = *model.problem;
     std::ostringstream text;
     // std::invalid_argument naming what it cannot express.
-    if (args->to == "wcsp") csp::write_wcsp(*problem, text);
-    if (args->to == "cfn") csp::write_cfn(*problem, text);
-    if (args->to == "yaml") csp::write_problem_yaml(*problem, text);
+    if (args->to == "wcsp") csp::write_wcsp(problem, text);
+    if (args->to == "cfn") csp::write_cfn(problem, text, model.value_labels);
+    if (args->to == "yaml") csp::write_problem_yaml(problem, text);
     if (args->out.empty()) {
       std::cout << text.str();
       return;

@@ -1,4 +1,4 @@
-// `sightline kinds`: every registered constraint kind, what it means and its fields.
+// `sightline kinds`: every registered constraint kind, what it means, its fields and an example.
 #include <iostream>
 
 #include "apps/commands.h"
@@ -29,6 +29,17 @@ void add_kinds_command(CLI::App& app) {
       table.add_row({name, fields.empty() ? "-" : fields, info.description});
     }
     table.print(std::cout);
+    // Each kind's example, as a problem file's entry (x1, x2, ... stand for its variables).
+    std::cout << "\nExamples:\n";
+    for (const std::string& name : kinds.names()) {
+      const csp::ConstraintKindInfo& info = kinds.get(name, {});
+      std::string scope;
+      for (std::size_t i = 0; i < info.example_arity; ++i) {
+        scope += (i ? ", x" : "x") + std::to_string(i + 1);
+      }
+      std::cout << "  - {kind: " << name << ", scope: [" << scope << "]"
+                << (info.example.empty() ? "" : ", " + info.example) << "}\n";
+    }
   });
 }
 

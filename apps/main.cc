@@ -7,17 +7,13 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
-#include "sightline/domains/camera/composition/composition_solvers.h"
-#include "sightline/domains/camera/control/camera_solvers.h"
-#include "sightline/solvers/toulbar2/toulbar2_solver.h"
+#include "apps/solver_registration.h"
 
 int main(int argc, char** argv) {
   namespace apps = sightline::apps;
-  // The camera's own solvers join the one registry, so every command can name them.
-  sightline::camera::solver_registry();
-  sightline::camera::register_composition_solvers(sightline::solvers::SolverRegistry::global());
-  // toulbar2 joins it when its program is installed (solvers/toulbar2/toulbar2_solver.h).
-  sightline::solvers::register_toulbar2_solver(sightline::solvers::SolverRegistry::global());
+  // The camera's and composition's solvers and toulbar2 join the one registry, so every
+  // command can name them.
+  apps::register_all_solvers();
   CLI::App app{"sightline: weighted constraint satisfaction with pluggable solvers"};
   app.name("sightline");
   app.require_subcommand(1);

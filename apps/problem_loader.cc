@@ -31,14 +31,14 @@ csp::LoadedProblem load_model(const std::string& path, const LoadOptions& option
 std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options) {
   const bool graph = ends_with(path, ".col");
   if (!graph && options.colours > 0) {
-    throw csp::InputError({path, 0, 0},
-                          "--colours applies to DIMACS graphs (.col) only, not to this file");
+    throw csp::InputError({path, 0, 0}, options.colours_name +
+                                            " applies to DIMACS graphs (.col) only, not to this file");
   }
   if (ends_with(path, ".yaml") || ends_with(path, ".yml")) return csp::read_problem_file(path);
   if (graph) {
     if (options.colours < 1) {
-      throw csp::InputError({path, 0, 0},
-                            "a DIMACS graph is coloured with a number of colours: add --colours K");
+      throw csp::InputError({path, 0, 0}, "a DIMACS graph is coloured with a number of colours: add " +
+                                              options.colours_usage);
     }
     return colouring::build_colouring_problem(colouring::read_dimacs_graph(path), options.colours);
   }
@@ -48,9 +48,9 @@ std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOp
   for (const char* suffix : {".cfn", ".cfn.gz", ".cfn.bz2", ".cfn.xz"}) {
     if (ends_with(path, suffix)) return csp::read_cfn_file(path);
   }
-  throw csp::InputError({path, 0, 0},
-                        "unknown problem file type (expected .yaml/.yml, .col with --colours K, "
-                        ".wcsp or .wcsp.gz, .cfn or .cfn.gz/.bz2/.xz)");
+  throw csp::InputError({path, 0, 0}, "unknown problem file type (expected .yaml/.yml, .col with " +
+                                          options.colours_usage +
+                                          ", .wcsp or .wcsp.gz, .cfn or .cfn.gz/.bz2/.xz)");
 }
 
 }  // namespace sightline::apps

@@ -17,6 +17,10 @@ namespace sightline::apps {
 
 struct LoadOptions {
   int colours = 0;  // for graphs; 0 = not given
+  // How the caller's users give `colours`, for the messages about it: the program's option
+  // ("--colours", "--colours K"), or the Python module's argument ("colours", "colours=K").
+  std::string colours_name = "--colours";
+  std::string colours_usage = "--colours K";
 };
 
 std::unique_ptr<csp::Problem> load_problem(const std::string& path, const LoadOptions& options);

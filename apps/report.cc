@@ -68,9 +68,9 @@ std::string result_json(const csp::LoadedProblem& model, const std::string& solv
       << ", \"evaluations\": " << r.evaluations << ", \"evaluations_at_best\": " << r.evaluations_at_best
       << ", \"iterations\": " << r.iterations << ", \"assignment\": {";
   for (csp::VariableId v = 0; v < p.num_variables(); ++v) {
-    const bool labelled = v < model.value_labels.size() && !model.value_labels[v].empty();
+    const std::string* label = csp::find_value_label(model.value_labels, v, r.best[v]);
     out << (v ? ", " : "") << csp::json_string(p.variable_name(v)) << ": "
-        << (labelled ? csp::json_string(model.value_name(v, r.best[v])) : csp::json_number(r.best[v]));
+        << (label ? csp::json_string(*label) : csp::json_number(r.best[v]));
   }
   out << "}, \"violated\": [";
   bool first = true;
@@ -119,9 +119,7 @@ void print_result(std::ostream& out, const csp::Problem& problem,
       .column("cost", TextTable::Align::kRight);
   for (std::size_t i = 0; i < shown; ++i) {
     const auto& c = *violated[i];
-    const csp::Constraint& constraint = problem.constraint(c.id);
-    table.add_row({constraint.label().empty() ? constraint.describe() : constraint.label(),
-                   std::string(constraint.kind()), c.hard ? "hard" : "soft",
+    table.add_row({problem.constraint_name(c.id), std::string(problem.constraint(c.id).kind()), c.hard ? "hard" : "soft",
                    format_number(c.violation), format_number(c.cost)});
   }
   out << "costliest " << shown << ":\n";

@@ -18,6 +18,7 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
+#include "sightline/experiments/execution/interruption.h"
 #include "sightline/experiments/execution/mpi_engine.h"
 #include "sightline/experiments/reports/suite_outputs.h"
 #include "sightline/experiments/execution/isolated_run.h"
@@ -75,13 +76,8 @@ void run_suite_command(const RunOptions& o) {
               << " run(s) ended in timeout, memout, crash or wrong; see the status column\n";
   }
   if (outcome.interrupted) {
-    const std::size_t done = outcome.results.size();
-    throw Interrupted("interrupted: " + std::to_string(done) + " of " +
-                      std::to_string(outcome.total) + " runs are done and saved" +
-                      (outcome.abandoned ? " (" + std::to_string(outcome.abandoned) +
-                                               " in flight abandoned, to run again)"
-                                         : std::string()) +
-                      "; resume with: sightline run " + o.suite + " --out " + o.out);
+    throw Interrupted(experiments::interruption_text(outcome) + "; resume with: sightline run " +
+                      o.suite + " --out " + o.out);
   }
   if (outcome.failed > 0) {
     throw RunFailed(std::to_string(outcome.failed) + " run(s) failed; see the note column of " +

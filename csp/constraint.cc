@@ -87,18 +87,4 @@ double Constraint::smooth_violation_and_gradient(std::span<const double> values,
   return violation_and_gradient(values, gradient);
 }
 
-std::string Constraint::describe() const {
-  std::string out(kind());
-  out += "(";
-  for (std::size_t i = 0; i < scope_.size(); ++i) {
-    if (i) out += ", ";
-    if (i == 6 && scope_.size() > 8) {
-      out += "... " + std::to_string(scope_.size()) + " variables";
-      break;
-    }
-    out += "x" + std::to_string(scope_[i]);
-  }
-  return out + ")";
-}
-
 }  // namespace sightline::csp

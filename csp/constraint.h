@@ -200,9 +200,6 @@ class Constraint {
   virtual double smooth_violation_and_gradient(std::span<const double> values,
                                                std::span<double> gradient, double smoothing) const;
 
-  // Kind and scope as text, for reports: "not_equal(x0, x3)".
-  std::string describe() const;
-
  private:
   std::vector<VariableId> scope_;
   double weight_;

@@ -1,5 +1,6 @@
 #include "sightline/csp/json_text.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +33,12 @@ std::string json_number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", value);
   return text;
+}
+
+std::string short_number(double value) {
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
 }
 
 }  // namespace sightline::csp

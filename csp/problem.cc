@@ -120,11 +120,17 @@ const Problem::NameRun& Problem::run_of(VariableId id) const {
 std::string Problem::constraint_name(ConstraintId id) const {
   const Constraint& c = constraint(id);
   if (!c.label().empty()) return c.label();
-  std::string name = std::string(c.kind()) + "(";
-  for (std::size_t i = 0; i < c.scope().size(); ++i) {
-    name += (i ? ", " : "") + variable_name(c.scope()[i]);
+  return std::string(c.kind()) + "(" + scope_names(id) + ")";
+}
+
+std::string Problem::scope_names(ConstraintId id) const {
+  const auto scope = constraint(id).scope();
+  std::string names;
+  for (std::size_t i = 0; i < scope.size(); ++i) {
+    if (i == 6 && scope.size() > 8) return names + ", ... " + std::to_string(scope.size()) + " variables";
+    names += (i ? ", " : "") + variable_name(scope[i]);
   }
-  return name + ")";
+  return names;
 }
 
 std::string Problem::variable_name(VariableId id) const {

@@ -81,9 +81,12 @@ class Problem {
   const Domain& domain(VariableId id) const { return domains_[domain_slot_[id]]; }
   // A variable's name (made from its batch's prefix for add_variables batches).
   std::string variable_name(VariableId id) const;
-  // How messages and tables name a constraint: its label, else its kind over its variables'
-  // names, "not_equal(WA, NT)".
+  // How messages, tables and breakdowns name a constraint: its label, else its kind over
+  // its variables' names, "not_equal(WA, NT)".
   std::string constraint_name(ConstraintId id) const;
+  // A constraint's variables' names, "WA, NT"; past 8 of them the first 6 and the count
+  // ("q0, q1, q2, q3, q4, q5, ... 1000 variables"), so a message stays a line.
+  std::string scope_names(ConstraintId id) const;
   // Name and domain as one record. The records are made for every variable on the first
   // call of either (a copy of each name and domain: on a million-variable model that is as
   // much as building it), so code that runs on large models uses domain() and

@@ -1,5 +1,7 @@
 #include "sightline/csp/spec.h"
 
+#include "sightline/csp/json_text.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -50,10 +52,7 @@ void Spec::fail(const std::string& message) const { throw InputError(where_, mes
 std::string Spec::preview() const {
   switch (type_) {
     case Type::kNull: return "nothing";
-    case Type::kNumber: {
-      std::string t = std::to_string(number_);
-      return "'" + t + "'";
-    }
+    case Type::kNumber: return "'" + short_number(number_) + "'";  // 5, not 5.000000
     case Type::kString: return "'" + (text_.size() > 40 ? text_.substr(0, 40) + "..." : text_) + "'";
     case Type::kList: return "a list of " + std::to_string(items_.size());
     case Type::kMap: return "a mapping";

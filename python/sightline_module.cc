@@ -2,15 +2,16 @@
 // weighted-CSP layer, solvers, cameras and suites for researchers, as Python objects.
 //
 // Build problems (ProblemBuilder, or problem files: .yaml, .wcsp, .cfn, .col), list solvers
-// and kinds, solve with options and limits (the GIL released while solving), read results
+// and kinds, solve with options and limits (the GIL released while solving; Ctrl-C stops a
+// solve or a suite and raises KeyboardInterrupt), read results
 // (assignment by variable name, cost, breakdown, stop reason, time and evaluations to
 // best); film a scene (the trace as a numpy structured array); run a suite and read its
 // results. Errors become Python exceptions: sightline.InputError (a ValueError with file,
 // line, column and detail) for bad input, sightline.OptionError for bad names and options.
-#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -19,13 +20,15 @@
 #include <vector>
 
 #include "apps/problem_loader.h"
+#include "apps/solver_registration.h"
+#include "python/interruptible_call.h"
+#include "python/trace_array.h"
 #include "sightline/csp/input_error.h"
 #include "sightline/csp/kinds/builder.h"
 #include "sightline/csp/kinds/constraint_kinds.h"
-#include "sightline/domains/camera/composition/composition_solvers.h"
-#include "sightline/domains/camera/control/camera_solvers.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
+#include "sightline/experiments/execution/interruption.h"
 #include "sightline/experiments/execution/suite_runner.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/edit_metrics.h"
@@ -132,12 +135,10 @@ struct PyResult {
   py::dict assignment() const {
     py::dict d;
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const double v = values[i];
-      if (i < labels.size() && !labels[i].empty() && v >= 0 &&
-          v < static_cast<double>(labels[i].size()) && v == static_cast<double>(static_cast<std::size_t>(v))) {
-        d[py::str(names[i])] = labels[i][static_cast<std::size_t>(v)];
+      if (const std::string* label = csp::find_value_label(labels, static_cast<csp::VariableId>(i), values[i])) {
+        d[py::str(names[i])] = *label;
       } else {
-        d[py::str(names[i])] = v;
+        d[py::str(names[i])] = values[i];
       }
     }
     return d;
@@ -171,11 +172,11 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
     throw std::invalid_argument("start has " + std::to_string(from.size()) + " values for " +
                                 std::to_string(p.problem->num_variables()) + " variables");
   }
-  solvers::SolverResult r;
-  {
-    py::gil_scoped_release release;
-    r = solver->solve(*p.problem, from, context);
-  }
+  // Ctrl-C stops the solver at its next budget check and raises KeyboardInterrupt.
+  std::atomic<bool> stop{false};
+  context.limits.stop = &stop;
+  const solvers::SolverResult r =
+      python::call_interruptibly(stop, [&] { return solver->solve(*p.problem, from, context); });
   PyResult out;
   for (csp::VariableId v = 0; v < p.problem->num_variables(); ++v) out.names.push_back(p.problem->variable_name(v));
   out.values = r.best;
@@ -202,50 +203,6 @@ PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dic
   return out;
 }
 
-// A trace as a numpy structured array, one record per frame, the CSV's columns.
-py::array trace_array(const std::vector<experiments::TraceRow>& rows) {
-  struct Record {
-    std::int32_t frame;
-    double t, char_x, char_y, char_z, char_yaw, cam_x, cam_y, cam_z, target_x, target_y, target_z;
-    std::int8_t cut;
-    double cost, solve_us;
-    std::int8_t visible;
-    double fov, roll;
-  };
-  py::list names, formats, offsets;
-  auto field = [&](const char* n, const char* f, std::size_t off) {
-    names.append(n);
-    formats.append(f);
-    offsets.append(off);
-  };
-  field("frame", "<i4", offsetof(Record, frame));
-  const char* doubles[] = {"t", "char_x", "char_y", "char_z", "char_yaw", "cam_x", "cam_y", "cam_z",
-                           "target_x", "target_y", "target_z"};
-  for (std::size_t i = 0; i < 11; ++i) field(doubles[i], "<f8", offsetof(Record, t) + 8 * i);
-  field("cut", "i1", offsetof(Record, cut));
-  field("cost", "<f8", offsetof(Record, cost));
-  field("solve_us", "<f8", offsetof(Record, solve_us));
-  field("visible", "i1", offsetof(Record, visible));
-  field("fov", "<f8", offsetof(Record, fov));
-  field("roll", "<f8", offsetof(Record, roll));
-  py::dict spec;
-  spec["names"] = names;
-  spec["formats"] = formats;
-  spec["offsets"] = offsets;
-  spec["itemsize"] = sizeof(Record);
-  py::dtype dtype = py::dtype::from_args(spec);
-  py::array out(dtype, std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows.size())});
-  auto* data = static_cast<Record*>(out.mutable_data());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const experiments::TraceRow& r = rows[i];
-    data[i] = Record{r.frame, r.t, r.character.x(), r.character.y(), r.character.z(), r.character_yaw,
-                     r.camera.x(), r.camera.y(), r.camera.z(), r.target.x(), r.target.y(), r.target.z(),
-                     static_cast<std::int8_t>(r.cut), r.cost, r.solve_us,
-                     static_cast<std::int8_t>(r.controller_visible), r.fov, r.roll};
-  }
-  return out;
-}
-
 py::dict follow(const std::string& scene_path, const std::string& solver, const std::string& profile,
                 std::uint64_t seed) {
   const camera::Scene scene = camera::read_scene_file(scene_path);
@@ -262,7 +219,7 @@ py::dict follow(const std::string& scene_path, const std::string& solver, const 
     run = experiments::run_camera(scene, chosen, options);
   }
   py::dict out;
-  out["trace"] = trace_array(run.trace);
+  out["trace"] = python::trace_array(run.trace);
   out["summary"] = experiments::summary_paragraph(scene, run);
   py::dict metrics;
   const std::vector<std::string> names = experiments::metric_names();
@@ -298,7 +255,13 @@ py::dict run_suite(const std::string& path, const std::string& out_dir, unsigned
   experiments::SuiteOutcome outcome;
   {
     py::gil_scoped_release release;
-    outcome = experiments::run_suite(suite, options);
+    outcome = experiments::run_suite(suite, options);  // Ctrl-C: it keeps what is done
+  }
+  if (outcome.interrupted) {
+    const std::string resume = "; resume with: sightline.run_suite(" + std::string(py::repr(py::str(path))) +
+                               ", " + std::string(py::repr(py::str(out_dir))) + ")";
+    PyErr_SetString(PyExc_KeyboardInterrupt, (experiments::interruption_text(outcome) + resume).c_str());
+    throw py::error_already_set();
   }
   py::dict d;
   d["total"] = outcome.total;
@@ -314,8 +277,8 @@ py::dict run_suite(const std::string& path, const std::string& out_dir, unsigned
 
 PYBIND11_MODULE(_sightline, m) {
   m.doc() = "sightline: weighted constraint satisfaction with pluggable solvers, and camera control";
-  camera::solver_registry();
-  camera::register_composition_solvers(solvers::SolverRegistry::global());
+  // Every solver the program offers (toulbar2 too, when installed), here and in suites.
+  apps::register_all_solvers();
 
   static py::exception<csp::InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<solvers::OptionError> option_error(m, "OptionError", PyExc_ValueError);
@@ -419,6 +382,8 @@ PYBIND11_MODULE(_sightline, m) {
   m.def("load_problem", [](const std::string& path, int colours) {
           apps::LoadOptions o;
           o.colours = colours;
+          o.colours_name = "colours";  // load_problem's argument, in messages
+          o.colours_usage = "colours=K";
           csp::LoadedProblem model = apps::load_model(path, o);
           return PyProblem{std::shared_ptr<csp::Problem>(std::move(model.problem)),
                            std::move(model.value_labels)};
@@ -448,10 +413,12 @@ PYBIND11_MODULE(_sightline, m) {
     for (const std::string& n : csp::ConstraintKinds::global().names()) {
       const csp::ConstraintKindInfo& k = csp::ConstraintKinds::global().get(n, {});
       out.append(py::dict(py::arg("name") = n, py::arg("description") = k.description,
-                          py::arg("fields") = k.fields));
+                          py::arg("fields") = k.fields, py::arg("example_arity") = k.example_arity,
+                          py::arg("example") = k.example));
     }
     return out;
-  }, "Every registered constraint kind with its fields.");
+  }, "Every registered constraint kind with its fields and an example (its scope's size, and its "
+     "fields as a problem file writes them).");
   m.def("follow", &follow, py::arg("scene"), py::arg("solver") = "", py::arg("profile") = "",
         py::arg("seed") = 1,
         "Films a scene: {'trace': numpy structured array, 'summary': str, 'metrics': dict}; a scene "

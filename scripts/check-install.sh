@@ -2,6 +2,7 @@
 # The installed package as a user meets it: installs BUILD_DIR into a temporary prefix, checks
 # the runtime component's link interface and its shared library's dependencies, builds and
 # runs a researcher's program on the static components and the installed program, then
+# imports the installed Python module (where its interpreter looks under the prefix), then
 # configures, builds and runs examples/embedding/ (C and C++) against the prefix, each from
 # its own folder, and judges the C example's trace with `sightline view` (the independent
 # visibility check and the unflagged-jump count). Run by ctest (test install_and_embed).
@@ -32,6 +33,35 @@ cmake --build "$work/research" -j2 >/dev/null
 echo "--- tests/install/research"
 "$work/research/research_check" "$root/experiments/scenes/crammed-doorway.yaml"
 "$prefix/bin/sightline" solvers >/dev/null
+
+# The Python module (when built): installed where its interpreter looks under the configured
+# prefix (python/CMakeLists.txt), and importable from there with what it needs.
+location="$build/python/install-location.txt"
+if [ -f "$location" ]; then
+  { read -r python; read -r site; read -r configured; } < "$location"
+  case "$site" in
+    /*) echo "--- Python module installed to the absolute $site: not checked here" ;;
+    *)
+      echo "--- Python module in $site"
+      PYTHONPATH="$prefix/$site" "$python" -c '
+import sys
+import sightline
+assert sightline.__file__.startswith(sys.argv[1]), sightline.__file__
+p = sightline.ProblemBuilder("x"); p.integer("a", 0, 1); r = sightline.solve(p.build(), "bnb")
+print("imported", sightline.__file__, "-", r.stop)' "$prefix/$site"
+      # Under the configured prefix, the interpreter itself searches that directory, when it
+      # searches anything there (Debian's /usr/local and /usr).
+      "$python" - "$configured" "$site" <<'PY'
+import os, sys
+prefix, site = sys.argv[1], sys.argv[2]
+under = [p for p in sys.path if p.startswith(prefix.rstrip("/") + "/")]
+if under and os.path.join(prefix, site) not in sys.path:
+    sys.exit(f"{os.path.join(prefix, site)} is not on {sys.executable}'s path {under}")
+print("on the interpreter's path under", prefix, ":", bool(under))
+PY
+      ;;
+  esac
+fi
 
 map="/usr/share/games/openarena/baseoa/pak6-patch088.pk3"
 for lang in c cpp; do

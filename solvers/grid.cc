@@ -101,6 +101,7 @@ void GridSolver::solve_into(const csp::Problem& problem, std::span<const double>
   csp::Score best = problem.score(result.best);
   std::uint64_t at_best = 1;
   std::uint64_t visited = 1;
+  budget.note_best(visited, 0, &best);  // the first point is the first best
   result.stop = StopReason::kCompleted;
   result.message.clear();
 

@@ -157,6 +157,10 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
   };
 
   csp::IncrementalEvaluator evaluator(problem, current);
+  // The start is the first best: when nothing improves on it (it is already at the target),
+  // the time to best is still recorded, as the trajectory's one point.
+  const csp::Score start_score = evaluator.score();
+  budget.note_best(evaluations, 0, &start_score);
   // Greedy pass: each variable takes its best value if that improves the score.
   if (options_.greedy_start) {
     for (csp::VariableId v = 0; v < n && !stopped; ++v) {
@@ -174,6 +178,10 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
       }
       evaluator.assign(v, best_value);
     }
+    if (const csp::Score now = evaluator.score(); now.better_than(start_score)) {
+      budget.note_best(evaluations, 0, &now);
+      best_seconds = budget.best_found_seconds();
+    }
   }
   // Then tabu, if asked, for its share of the time.
   if (options_.tabu_seconds > 0 && !stopped && !out_of_budget(0)) {
@@ -181,6 +189,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     SolveContext tabu_context;
     tabu_context.seed = context.seed;
     tabu_context.want_breakdown = false;
+    tabu_context.limits.stop = limits.stop;
     tabu_context.limits.max_evaluations = left_of(limits.max_evaluations, evaluations);
     tabu_context.limits.max_iterations = left_of(limits.max_iterations, iterations);
     const double left = time_left();
@@ -224,6 +233,7 @@ void LnsSolver::solve_into(const csp::Problem& problem, std::span<const double> 
     SolveContext sub_context;
     sub_context.seed = random.bits();
     sub_context.want_breakdown = false;
+    sub_context.limits.stop = limits.stop;
     sub_context.limits.max_iterations = node_limit;
     // One evaluation is kept back for scoring the result in the whole problem.
     sub_context.limits.max_evaluations =

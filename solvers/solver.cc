@@ -13,6 +13,7 @@ const char* to_string(StopReason reason) {
     case StopReason::kEvaluationLimit: return "evaluation limit";
     case StopReason::kIterationLimit: return "iteration limit";
     case StopReason::kTimeLimit: return "time limit";
+    case StopReason::kInterrupted: return "interrupted";
   }
   return "?";
 }
@@ -57,10 +58,15 @@ bool Budget::exhausted(std::uint64_t evaluations, std::uint64_t iterations) {
     reason_ = StopReason::kIterationLimit;
     return true;
   }
-  if (limits_.time_limit_seconds > 0 && ++calls_ % clock_stride_ == 0 &&
-      read_clock(evaluations) >= limits_.time_limit_seconds) {
-    reason_ = StopReason::kTimeLimit;
-    return true;
+  if ((limits_.time_limit_seconds > 0 || limits_.stop) && ++calls_ % clock_stride_ == 0) {
+    if (limits_.stop_requested()) {
+      reason_ = StopReason::kInterrupted;
+      return true;
+    }
+    if (limits_.time_limit_seconds > 0 && read_clock(evaluations) >= limits_.time_limit_seconds) {
+      reason_ = StopReason::kTimeLimit;
+      return true;
+    }
   }
   return false;
 }

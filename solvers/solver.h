@@ -8,6 +8,7 @@
 // is used by one thread at a time.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -24,8 +25,14 @@ struct SolveLimits {
   std::uint64_t max_evaluations = 0;  // constraint-set evaluations (one candidate = one)
   std::uint64_t max_iterations = 0;   // solver-specific steps (moves, passes, nodes)
   double time_limit_seconds = 0;      // wall-clock
+  // A request from outside to stop as soon as possible with the best so far (Ctrl-C in the
+  // Python module, whose solve runs on a thread of its own): set by another thread, read
+  // by Budget::exhausted (StopReason::kInterrupted). Not owned; null = none. Not a limit:
+  // it does not count in any(), so a solve nobody stops runs as it would without it.
+  const std::atomic<bool>* stop = nullptr;
 
   bool any() const { return max_evaluations || max_iterations || time_limit_seconds > 0; }
+  bool stop_requested() const { return stop && stop->load(std::memory_order_relaxed); }
 };
 
 struct SolveContext {
@@ -63,6 +70,7 @@ enum class StopReason {
   kEvaluationLimit,
   kIterationLimit,
   kTimeLimit,
+  kInterrupted,      // SolveLimits::stop was set (Ctrl-C)
 };
 const char* to_string(StopReason reason);
 
@@ -127,7 +135,7 @@ class Solver {
 };
 
 // Tracks the limits during a solve. Checking the clock is cheap but not free, so
-// exhausted() reads it only every `clock_stride` calls.
+// exhausted() reads it (and the stop request) only every `clock_stride` calls.
 class Budget {
  public:
   explicit Budget(const SolveLimits& limits, unsigned clock_stride = 64);

@@ -5,19 +5,20 @@
 
 namespace sightline::csp {
 
-std::vector<double> expand_violations(const Problem& problem, const Constraint& c, const char* format) {
+std::vector<double> expand_violations(const Problem& problem, ConstraintId id, const char* format) {
+  const Constraint& c = problem.constraint(id);
   const auto scope = c.scope();
   double count = 1;
   for (VariableId v : scope) {
     if (!problem.domain(v).is_discrete()) {
-      throw std::invalid_argument("cannot write " + c.describe() + " to " + format + ": variable " +
+      throw std::invalid_argument("cannot write " + problem.constraint_name(id) + " to " + format + ": variable " +
                                   problem.variable_name(v) + " is continuous");
     }
     count *= static_cast<double>(problem.domain(v).size());
   }
   if (count > static_cast<double>(kMaxExpandedTuples)) {
     std::ostringstream message;
-    message << "cannot write " << c.describe() << " to " << format << ": as a cost table it has "
+    message << "cannot write " << problem.constraint_name(id) << " to " << format << ": as a cost table it has "
             << count << " tuples, more than the " << kMaxExpandedTuples
             << " a constraint may expand to";
     throw std::invalid_argument(message.str());

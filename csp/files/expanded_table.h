@@ -15,8 +15,8 @@ inline constexpr std::size_t kMaxExpandedTuples = 1'000'000;
 
 // The violation of every tuple of the scope's domains, in odometer order (the last variable
 // of the scope fastest), the rest of the assignment at the domains' first values. Throws
-// std::invalid_argument naming the constraint and `format` (".wcsp") for a continuous
-// variable in the scope or more than kMaxExpandedTuples tuples.
-std::vector<double> expand_violations(const Problem& problem, const Constraint& c, const char* format);
+// std::invalid_argument naming the constraint (Problem::constraint_name) and `format`
+// (".wcsp") for a continuous variable in the scope or more than kMaxExpandedTuples tuples.
+std::vector<double> expand_violations(const Problem& problem, ConstraintId id, const char* format);
 
 }  // namespace sightline::csp

@@ -223,12 +223,20 @@ class Reader {
       const Spec single = Spec::map(std::move(fields), entry.where());
       const auto& each = scopes->items("a list of scopes for 'scopes'");
       if (each.empty()) scopes->fail("expected at least one scope in 'scopes'");
-      for (const Spec& one : each) add(kinds, kind, one, weight, hard, single);
+      for (const Spec& one : each) {
+        const ConstraintId id = add(kinds, kind, one, weight, hard, single);
+        // One label for several constraints: each is told apart by its scope, in every
+        // message, table and breakdown ("no clash(r5, r7)").
+        Constraint& c = problem().mutable_constraint(id);
+        if (each.size() > 1 && !c.label().empty()) {
+          c.set_label(c.label() + "(" + problem().scope_names(id) + ")");
+        }
+      }
     }
   }
 
-  void add(const ConstraintKinds& kinds, const std::string& kind, const Spec& scope_field,
-           double weight, bool hard, const Spec& entry) {
+  ConstraintId add(const ConstraintKinds& kinds, const std::string& kind, const Spec& scope_field,
+                   double weight, bool hard, const Spec& entry) {
     std::vector<VariableId> scope = resolve_scope(scope_field);
     // Repeated variables are refused by Problem; say where.
     for (std::size_t i = 0; i < scope.size(); ++i) {
@@ -275,7 +283,7 @@ class Reader {
     auto constraint = create_constraint(kinds, problem(), kind, std::move(scope), weight, hard,
                                         with_labels.is_map() ? with_labels : entry, where);
     try {
-      problem().add_constraint(std::move(constraint));
+      return problem().add_constraint(std::move(constraint));
     } catch (const std::invalid_argument& e) {
       throw InputError(where, e.what());
     }
@@ -294,14 +302,19 @@ std::string stem_of(const std::string& origin) {
 
 }  // namespace
 
-std::string LoadedProblem::value_name(VariableId var, double value) const {
-  if (var < value_labels.size() && !value_labels[var].empty()) {
-    const auto& labels = value_labels[var];
-    if (value >= 0 && value < static_cast<double>(labels.size()) &&
-        value == static_cast<double>(static_cast<std::size_t>(value))) {
-      return labels[static_cast<std::size_t>(value)];
-    }
+const std::string* find_value_label(const std::vector<std::vector<std::string>>& value_labels,
+                                    VariableId var, double value) {
+  if (var >= value_labels.size()) return nullptr;
+  const auto& labels = value_labels[var];
+  if (value >= 0 && value < static_cast<double>(labels.size()) &&
+      value == static_cast<double>(static_cast<std::size_t>(value))) {
+    return &labels[static_cast<std::size_t>(value)];
   }
+  return nullptr;
+}
+
+std::string LoadedProblem::value_name(VariableId var, double value) const {
+  if (const std::string* label = find_value_label(value_labels, var, value)) return *label;
   std::ostringstream out;
   out << value;
   return out.str();

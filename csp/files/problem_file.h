@@ -36,6 +36,12 @@ struct LoadedProblem {
   std::string value_name(VariableId var, double value) const;
 };
 
+// The label `value_labels` gives `value` of variable `var` (label i is value i), or null when
+// there is none: what every writer of labelled values (JSON results, solution files, .cfn
+// value names, Python) looks up before falling back on a number of its own.
+const std::string* find_value_label(const std::vector<std::vector<std::string>>& value_labels,
+                                    VariableId var, double value);
+
 // Reads a problem file. Throws InputError (file, line, what was expected) on any mistake.
 std::unique_ptr<Problem> read_problem_file(const std::string& path);
 // Parses problem text; `origin` names it in error messages.

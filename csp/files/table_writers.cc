@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
+#include "sightline/csp/files/decimal_costs.h"
 #include "sightline/csp/files/expanded_table.h"
+#include "sightline/csp/files/problem_file.h"
 #include "sightline/csp/json_text.h"
 
 namespace sightline::csp {
@@ -15,11 +20,12 @@ namespace {
 std::string exact(double v) { return json_number(v); }
 
 // The weighted cost of every tuple of a constraint's scope, dense (expanded_table.h order).
-std::vector<double> dense_costs(const Problem& problem, const Constraint& c, const char* format) {
-  std::vector<double> costs = expand_violations(problem, c, format);
+std::vector<double> dense_costs(const Problem& problem, ConstraintId id, const char* format) {
+  const Constraint& c = problem.constraint(id);
+  std::vector<double> costs = expand_violations(problem, id, format);
   for (double& v : costs) {
     if (!std::isfinite(v) || v < 0) {
-      throw std::invalid_argument("cannot write " + c.describe() + " to " + format +
+      throw std::invalid_argument("cannot write " + problem.constraint_name(id) + " to " + format +
                                   ": a violation is not a finite number >= 0");
     }
     v *= c.weight();
@@ -27,30 +33,82 @@ std::vector<double> dense_costs(const Problem& problem, const Constraint& c, con
   return costs;
 }
 
+// Whether toulbar2 reads `name` as a name: not empty, not starting like a number, none of
+// the characters its parser splits on (and none JSON would escape).
+bool cfn_identifier(const std::string& name) {
+  if (name.empty() || std::string_view("0123456789-.+").find(name[0]) != std::string_view::npos) {
+    return false;
+  }
+  for (const char ch : name) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u <= ' ' || u == 0x7f || std::string_view("/#[]{}:,\"\\").find(ch) != std::string_view::npos) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Hands out distinct .cfn identifiers within one namespace (the variables, or one domain's
+// values): the preferred name when it is one and free, else the fallback, made distinct
+// with trailing underscores.
+class CfnNames {
+ public:
+  std::string take(const std::string& preferred, const std::string& fallback) {
+    std::string name = cfn_identifier(preferred) && !taken_.count(preferred) ? preferred : fallback;
+    while (taken_.count(name)) name += "_";
+    taken_.insert(name);
+    return name;
+  }
+
+ private:
+  std::set<std::string> taken_;
+};
+
 }  // namespace
 
-void write_cfn(const Problem& problem, std::ostream& out) {
+void write_cfn(const Problem& problem, std::ostream& out,
+               const std::vector<std::vector<std::string>>& value_labels) {
   for (VariableId v = 0; v < problem.num_variables(); ++v) {
     if (!problem.domain(v).is_discrete()) {
       throw std::invalid_argument("cannot write variable " + problem.variable_name(v) +
                                   " to .cfn: its domain is not discrete");
     }
   }
+  // The tables, the upper bound and the decimal places every soft cost needs.
   std::vector<std::vector<double>> tables;
   double ub = 1;
+  int decimals = 0;
   for (ConstraintId id = 0; id < problem.num_constraints(); ++id) {
     const Constraint& c = problem.constraint(id);
-    tables.push_back(dense_costs(problem, c, ".cfn"));
-    if (!c.is_hard() && !tables.back().empty()) {
-      ub += *std::max_element(tables.back().begin(), tables.back().end());
+    tables.push_back(dense_costs(problem, id, ".cfn"));
+    if (c.is_hard() || tables.back().empty()) continue;
+    for (const double cost : tables.back()) {
+      const std::optional<int> d = cost_decimals(cost);
+      if (!d) {
+        throw std::invalid_argument("cannot write " + problem.constraint_name(id) +
+                                    " to .cfn: its weighted cost " + exact(cost) + " has more than " +
+                                    std::to_string(kMaxCostDecimals) +
+                                    " decimal places (toulbar2 would round it)");
+      }
+      decimals = std::max(decimals, *d);
     }
+    ub += *std::max_element(tables.back().begin(), tables.back().end());
   }
-  out << "{\"problem\": {\"name\": " << json_string(problem.name().empty() ? "problem" : problem.name())
-      << ", \"mustbe\": \"<" << exact(ub) << "\"},\n \"variables\": {";
+  const std::string bound = fixed_decimal(ub, decimals);
+  out << "{\"problem\": {\"name\": " << json_string(CfnNames().take(problem.name(), "problem"))
+      << ", \"mustbe\": \"<" << bound << "\"},\n \"variables\": {";
+  CfnNames variable_names;
+  std::vector<std::string> names(problem.num_variables());
   for (VariableId v = 0; v < problem.num_variables(); ++v) {
+    names[v] = variable_names.take(problem.variable_name(v), "x" + std::to_string(v));
     const Domain& d = problem.domain(v);
-    out << (v ? ",\n  " : "\n  ") << json_string(problem.variable_name(v)) << ": [";
-    for (std::size_t i = 0; i < d.size(); ++i) out << (i ? ", " : "") << json_string(exact(d.value_at(i)));
+    out << (v ? ",\n  " : "\n  ") << json_string(names[v]) << ": [";
+    CfnNames value_names;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      const double value = d.value_at(i);
+      const std::string* label = find_value_label(value_labels, v, value);
+      out << (i ? ", " : "") << json_string(value_names.take(label ? *label : "", "v" + short_number(value)));
+    }
     out << "]";
   }
   out << "},\n \"functions\": {";
@@ -58,12 +116,16 @@ void write_cfn(const Problem& problem, std::ostream& out) {
     const Constraint& c = problem.constraint(id);
     out << (id ? ",\n  " : "\n  ") << json_string("c" + std::to_string(id)) << ": {\"scope\": [";
     const auto scope = c.scope();
-    for (std::size_t i = 0; i < scope.size(); ++i) out << (i ? ", " : "") << json_string(problem.variable_name(scope[i]));
+    for (std::size_t i = 0; i < scope.size(); ++i) out << (i ? ", " : "") << json_string(names[scope[i]]);
     out << "], \"costs\": [";
     const auto& costs = tables[id];
     for (std::size_t i = 0; i < costs.size(); ++i) {
-      const double cost = c.is_hard() ? (costs[i] > 0 ? ub : 0) : costs[i];
-      out << (i ? ", " : "") << exact(cost);
+      out << (i ? ", " : "");
+      if (c.is_hard()) {
+        out << (costs[i] > 0 ? bound : "0");
+      } else {
+        out << fixed_decimal(costs[i], decimals);
+      }
     }
     out << "]}";
   }
@@ -111,13 +173,13 @@ void write_problem_yaml(const Problem& problem, std::ostream& out) {
       out << "]\n";
       continue;
     }
-    const std::vector<double> violations = expand_violations(problem, c, "a problem file");
+    const std::vector<double> violations = expand_violations(problem, id, "a problem file");
     out << "    default: 0\n    tuples: [";
     std::vector<std::size_t> digit(scope.size(), 0);
     std::size_t written = 0;
     for (double violation : violations) {
       if (!std::isfinite(violation) || violation < 0) {
-        throw std::invalid_argument("cannot write " + c.describe() +
+        throw std::invalid_argument("cannot write " + problem.constraint_name(id) +
                                     " to a problem file: a violation is not a finite number >= 0");
       }
       if (violation != 0) {

@@ -39,7 +39,8 @@ ConstraintKindInfo abs_deviation_kind() {
                 r.hard);
             set_bounds_from_domains(*c, r.problem);
             return c;
-          }};
+          },
+          2, "coefficients: [1, -1], target: 1"};
 }
 
 }  // namespace sightline::csp

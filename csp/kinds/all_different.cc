@@ -480,6 +480,8 @@ ConstraintKindInfo all_different_kind() {
       "values x_i + offset_i pairwise different; measure var (variables to change) or dec "
       "(equal pairs)";
   info.fields = {"offsets", "measure"};
+  info.example_arity = 3;
+  info.example = "measure: dec";
   info.factory = [](const ConstraintRequest& request) -> std::unique_ptr<Constraint> {
     std::vector<double> offsets;
     if (const Spec* spec = request.params.find("offsets")) {

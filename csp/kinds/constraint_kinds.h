@@ -37,6 +37,13 @@ struct ConstraintKindInfo {
   // label, kind), so readers can reject misspelt fields.
   std::vector<std::string> fields;
   ConstraintFactory factory;
+  // A working example, for `sightline kinds` and for the tests that take every registered
+  // kind through the writers and solvers, so a kind is tested by being registered: how many
+  // variables its scope takes (over small integer domains, such as 0..3) and its own fields
+  // as a problem file writes them inside a flow mapping ("op: '<=', rhs: 2"; "" when it has
+  // none to give).
+  std::size_t example_arity = 2;
+  std::string example;
 };
 
 class ConstraintKinds {

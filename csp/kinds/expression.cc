@@ -120,6 +120,10 @@ ExpressionConstraint::ExpressionConstraint(std::vector<VariableId> scope,
     (void)c.parser.Eval();  // compiles to bytecode now, not during the first search step
   } catch (const mu::Parser::exception_type& e) {
     std::string message = "formula '" + formula_ + "': " + e.GetMsg();
+    if (e.GetCode() == mu::ecINTERNAL_ERROR) {
+      // muparser's word for some syntax errors it does not catch by name ("x + +").
+      message = "formula '" + formula_ + "': cannot be parsed (an operator without its operand?)";
+    }
     if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN) {
       std::string usable;
       for (const std::string& n : names) usable += (usable.empty() ? "" : ", ") + n;
@@ -169,7 +173,8 @@ ConstraintKindInfo expression_kind() {
             } catch (const std::invalid_argument& e) {
               field.fail(e.what());
             }
-          }};
+          },
+          2, "formula: 'abs(_1 - 2 * _2)'"};
 }
 
 }  // namespace sightline::csp

@@ -81,7 +81,8 @@ ConstraintKindInfo linear_kind() {
                 NumberOrParameter::read_or(e, "rhs", r.problem.parameters(), 0), r.weight, r.hard);
             set_bounds_from_domains(*c, r.problem);
             return c;
-          }};
+          },
+          3, "coefficients: [1, 2, -1], op: '<=', rhs: 2"};
 }
 
 }  // namespace sightline::csp

@@ -49,7 +49,8 @@ ConstraintKindInfo not_equal_kind() {
             }
             return std::make_unique<NotEqual>(r.scope[0], r.scope[1],
                                               r.params.number_or("offset", 0), r.weight, r.hard);
-          }};
+          },
+          2, "offset: 1"};
 }
 
 }  // namespace sightline::csp

@@ -107,7 +107,8 @@ ConstraintKindInfo stretch_kind() {
             }
             return std::make_unique<StretchConstraint>(r.scope, static_cast<std::size_t>(m),
                                                        r.weight, r.hard, static_cast<std::size_t>(most));
-          }};
+          },
+          3, "min: 2"};
 }
 
 }  // namespace sightline::csp

@@ -421,7 +421,8 @@ ConstraintKindInfo table_kind() {
           }
           throw InputError(items[e.entry()].where(), message);
         }
-      }};
+      },
+      2, "default: 1, tuples: [[0, 1, 0], [1, 1, 3], [2, 0, 2]]"};
 }
 
 }  // namespace sightline::csp

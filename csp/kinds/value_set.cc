@@ -27,7 +27,8 @@ void check_unary(const ConstraintRequest& r, const char* kind) {
   }
 }
 
-ConstraintKindInfo set_kind(const char* name, const char* description, bool inside) {
+ConstraintKindInfo set_kind(const char* name, const char* description, bool inside,
+                            const char* example) {
   return {name, description, {"values"},
           [name, inside](const ConstraintRequest& r) -> std::unique_ptr<Constraint> {
             check_unary(r, name);
@@ -36,17 +37,19 @@ ConstraintKindInfo set_kind(const char* name, const char* description, bool insi
             if (values.empty()) list.fail(std::string(name) + " needs at least one value");
             return std::make_unique<ValueSetConstraint>(r.scope[0], std::move(values), inside, name,
                                                         r.weight, r.hard);
-          }};
+          },
+          1, example};
 }
 
 }  // namespace
 
 ConstraintKindInfo in_kind() {
-  return set_kind("in", "x in {values}: violation 1 when x is none of them", true);
+  return set_kind("in", "x in {values}: violation 1 when x is none of them", true, "values: [0, 2]");
 }
 
 ConstraintKindInfo not_in_kind() {
-  return set_kind("not_in", "x not in {values}: violation 1 when x is one of them", false);
+  return set_kind("not_in", "x not in {values}: violation 1 when x is one of them", false,
+                  "values: [1]");
 }
 
 ConstraintKindInfo equals_kind() {
@@ -56,7 +59,8 @@ ConstraintKindInfo equals_kind() {
             return std::make_unique<ValueSetConstraint>(
                 r.scope[0], std::vector<double>{r.params.at("value").as_number("a value")}, true,
                 "equals", r.weight, r.hard);
-          }};
+          },
+          1, "value: 1"};
 }
 
 }  // namespace sightline::csp

@@ -4,7 +4,9 @@
 Each solver runs once per instance with a time limit (1 s by default), from the same start
 and seed, keeping its anytime trajectory (Result.trajectory: the best cost each time it
 improved); the plot has one panel per instance and one step curve per solver, best feasible
-cost against time (log scale).
+cost against time (log scale). Where an instance's costs span orders of magnitude (a start
+at 4e6, finals at 10310 and 10914), its cost axis is the cost above the lowest one reached,
+on a symmetric log scale, so close finals stay apart.
 
     PYTHONPATH=build/python python3 examples/python/compare_solvers.py \
         [--out solvers.png] [--time-limit 1] [INSTANCE ...]
@@ -32,6 +34,23 @@ DEFAULT = [
 SOLVERS = ["sls", "tabu", "lns", "bnb", "sls>bnb"]
 
 
+def plot_curves(ax, curves):
+    """Step curves of (name, times, costs); relative to the lowest cost on a symlog axis when
+    the costs above it span two orders of magnitude or more."""
+    if not curves:
+        return
+    best = min(min(costs) for _, _, costs in curves)
+    above = [c - best for _, _, costs in curves for c in costs if c > best]
+    relative = bool(above) and max(above) >= 100 * min(above)
+    for name, times, costs in curves:
+        ax.step(times, [c - best for c in costs] if relative else costs, where="post", label=name)
+    if relative:
+        ax.set_yscale("symlog", linthresh=min(above))
+        ax.set_ylabel(f"best cost - {best:g} (feasible; symlog)")
+    else:
+        ax.set_ylabel("best cost (feasible)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("instances", nargs="*", help="problem files (.yaml, .wcsp, .cfn)")
@@ -46,6 +65,7 @@ def main():
         problem = sl.load_problem(path, colours=colours)
         print(f"{os.path.basename(path)}: {len(problem.variables)} variables, "
               f"{problem.num_constraints} constraints")
+        curves = []
         for name in solvers:
             try:
                 r = sl.solve(problem, name, time_limit=args.time_limit, seed=1)
@@ -60,10 +80,10 @@ def main():
             if points:
                 times = [max(t, 1e-6) for t, _ in points] + [max(r.wall_seconds, points[-1][0])]
                 costs = [c for _, c in points] + [points[-1][1]]
-                ax.step(times, costs, where="post", label=name)
+                curves.append((name, times, costs))
+        plot_curves(ax, curves)
         ax.set_xscale("log")
         ax.set_xlabel("time (s)")
-        ax.set_ylabel("best cost (feasible)")
         ax.set_title(os.path.basename(path))
         ax.legend()
     fig.tight_layout()

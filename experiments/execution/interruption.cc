@@ -21,6 +21,15 @@ bool interruption_requested() { return requested.load(std::memory_order_relaxed)
 
 void request_interruption() { requested.store(true, std::memory_order_relaxed); }
 
+std::string interruption_text(const SuiteOutcome& outcome) {
+  std::string text = "interrupted: " + std::to_string(outcome.results.size()) + " of " +
+                     std::to_string(outcome.total) + " runs are done and saved";
+  if (outcome.abandoned) {
+    text += " (" + std::to_string(outcome.abandoned) + " in flight abandoned, to run again)";
+  }
+  return text;
+}
+
 InterruptionHandlers::InterruptionHandlers() : saved_(new Saved) {
   requested.store(false, std::memory_order_relaxed);
   struct sigaction action {};

@@ -3,11 +3,15 @@
 // Ctrl-C reaches the whole process group): it leaves no result and no log, so a resumed
 // suite runs it again. Results, statistics and the summary of what is done are written, and
 // the outcome says the suite was interrupted (the `run` command then prints how to resume
-// and exits 130).
+// and exits 130; the Python module raises KeyboardInterrupt saying so).
 //
 // run_suite installs the handlers for its duration (InterruptionHandlers) and restores the
 // ones it found, so a host (the Python module) keeps its own outside a suite.
 #pragma once
+
+#include <string>
+
+#include "sightline/experiments/suite/suite_results.h"
 
 namespace sightline::experiments {
 
@@ -15,6 +19,11 @@ namespace sightline::experiments {
 bool interruption_requested();
 // What the handlers do; for tests.
 void request_interruption();
+
+// What an interrupted suite's outcome says to its user, before how to resume (which the
+// caller knows: a command line, a Python call): "interrupted: 3 of 8 runs are done and saved
+// (1 in flight abandoned, to run again)".
+std::string interruption_text(const SuiteOutcome& outcome);
 
 class InterruptionHandlers {
  public:

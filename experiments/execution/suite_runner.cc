@@ -24,6 +24,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "sightline/csp/files/problem_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/execution/isolated_run.h"
 #include "sightline/experiments/execution/output_manifest.h"
@@ -149,18 +150,22 @@ void write_anytime_csv(const std::string& path, const solvers::SolverResult& res
   std::filesystem::rename(tmp, path);
 }
 
-// The run's best assignment, a variable per row by name (runs/<id>.solution.csv), for
+// The run's best assignment, a variable per row by name (runs/<id>.solution.csv), a value by
+// its label where the problem file gives labels (as `solve --format json` writes it), for
 // problems of up to kMostSolutionVariables variables (a million queens would write 15 MB a run).
 constexpr std::size_t kMostSolutionVariables = 100000;
-void write_solution_csv(const std::string& path, const csp::Problem& problem,
+void write_solution_csv(const std::string& path, const LoadedSuiteProblem& loaded,
                         const solvers::SolverResult& result) {
+  const csp::Problem& problem = *loaded.problem;
   if (problem.num_variables() > kMostSolutionVariables) return;
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp);
     out << "variable,value\n";
     for (csp::VariableId v = 0; v < problem.num_variables(); ++v) {
-      out << problem.variable_name(v) << ',' << number_text(result.best[v]) << '\n';
+      const std::string* label = csp::find_value_label(loaded.value_labels, v, result.best[v]);
+      out << csv_field(problem.variable_name(v)) << ','
+          << (label ? csv_field(*label) : number_text(result.best[v])) << '\n';
     }
     if (!out) throw std::runtime_error("cannot write " + tmp);
   }
@@ -210,7 +215,7 @@ void execute_toy(const Suite& suite, const SuiteRun& run, const std::string& fil
   for (std::size_t i = 0; i < values.size(); ++i) r.values[first + i] = values[i];
   if (!file_base.empty()) {
     write_anytime_csv(file_base + ".anytime.csv", result);
-    write_solution_csv(file_base + ".solution.csv", *loaded.problem, result);
+    write_solution_csv(file_base + ".solution.csv", loaded, result);
   }
   r.status = "ok";
   if (loaded.count_broken) r.note = "independent_broken counts " + loaded.broken_name;

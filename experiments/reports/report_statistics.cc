@@ -235,6 +235,46 @@ double sorted_quantile(const std::vector<double>& v, double q) {
   return v[i] + frac * (v[i + 1] - v[i]);
 }
 
+// Every value a series draws (its line and band), for changing them all alike.
+template <class Lines, class F>
+void for_each_value(Lines& series, F f) {
+  for (auto& line : series) {
+    for (auto& point : line.points) f(point.second);
+    for (auto& v : line.band_lo) f(v);
+    for (auto& v : line.band_hi) f(v);
+  }
+}
+
+// Whether the costs above the lowest drawn, `best`, span two orders of magnitude or more: a
+// curve starting at 4e6 would then crowd finals of 10310 and 10914 into one pixel of a
+// linear axis.
+bool spans_orders_of_magnitude(const std::vector<Series>& series, double best) {
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for_each_value(series, [&](double v) {
+    if (v - best > 0) {
+      smallest = std::min(smallest, v - best);
+      largest = std::max(largest, v - best);
+    }
+  });
+  return std::isfinite(smallest) && largest >= 100 * smallest;
+}
+
+// Turns every value into its excess over `best` and returns the log axis that shows them,
+// from the decade below the smallest excess (where `best` itself, an excess of 0, is drawn).
+Axis relative_log_axis(std::vector<Series>& series, double best) {
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for_each_value(series, [&](double& v) {
+    v -= best;
+    if (v > 0) smallest = std::min(smallest, v);
+    largest = std::max(largest, v);
+  });
+  Axis y;
+  y.log = true;
+  y.lo = std::pow(10.0, std::floor(std::log10(smallest)));
+  y.hi = std::max(largest, y.lo * 10);
+  return y;
+}
+
 }  // namespace
 
 std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outcome,
@@ -271,7 +311,9 @@ std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outco
          "least half the seeds have a feasible assignment; then each "
          "solver's final costs over seeds as a box plot (whiskers: min and max). From "
          "<code>runs/&lt;id&gt;.anytime.csv</code> (seconds, evaluations, cost, hard); "
-         "results.csv has the cost at 1%, 10% and 50% of the time limit.</p>";
+         "results.csv has the cost at 1%, 10% and 50% of the time limit. Where a problem's "
+         "costs span orders of magnitude (a start far above the finals), its cost axis is "
+         "the cost above the lowest one drawn, on a log scale, so close finals stay apart.</p>";
   constexpr std::size_t kMostProblems = 24;
   for (std::size_t k = 0; k < problems.size() && k < kMostProblems; ++k) {
     const std::string& problem = problems[k];
@@ -310,12 +352,16 @@ std::string anytime_report_section(const Suite& suite, const SuiteOutcome& outco
       for (double& v : line.band_hi) v = std::isfinite(v) ? v : y.hi;
     }
     if (!std::isfinite(y.lo)) continue;
-    if (y.hi - y.lo < 1e-9) {
+    std::string y_label = "best cost (median, IQR band)";
+    if (const double best = y.lo; spans_orders_of_magnitude(series, best)) {
+      y = relative_log_axis(series, best);
+      y_label = "best cost - " + tick_text(best) + " (log scale; " + tick_text(best) + " at the bottom)";
+    } else if (y.hi - y.lo < 1e-9) {
       y.lo -= 1;
       y.hi += 1;
     }
-    out << chart_svg("Anytime curve: " + problem, x, "time, s (log scale)", y, false,
-                     "best cost (median, IQR band)", series, options);
+    out << chart_svg("Anytime curve: " + problem, x, "time, s (log scale)", y, false, y_label,
+                     series, options);
     // Box plot of the final costs.
     const double width = options.width, row = 18, top = 26, left = 140, right = 30;
     const double height = top + row * static_cast<double>(solvers.size()) + 30;
@@ -373,10 +419,8 @@ std::string statistics_report_section(const Suite& suite, const SuiteOutcome& ou
   char limit[32];
   std::snprintf(limit, sizeof limit, "%g", p.time_limit);
   std::ostringstream out;
-  out << "<h2>Solved against time</h2><p class='legend'>Problem runs; a run is solved when it "
-         "is feasible, its solver stopped on its own (completed, proven optimal or target "
-         "reached) and its time is within the limit of "
-      << limit
+  out << "<h2>Solved against time</h2><p class='legend'>Problem runs; "
+      << html_escape(solved_rule_text(suite)) << "; and its time is within the limit of " << limit
       << " s (the suite's time limit, else the slowest run). The cactus plot counts every run "
          "(instance x seed); the performance profile takes each solver's median run per "
          "instance. The numbers are in <code>cactus.csv</code> and <code>profiles.csv</code>."

@@ -121,19 +121,9 @@ std::string statistics_markdown(const Suite& suite, const SuiteOutcome& outcome)
     out << '\n';
   }
   if (!s.par2.empty()) {
-    const bool references = !suite.references.empty() || !suite.reference_from.empty();
     out << "### PAR-2\n\n"
-        << (references
-                ? "Mean time over each solver's problem runs: a run is solved when it is feasible "
-                  "and within " + statistic_text(suite.reference_tolerance) +
-                      " of its problem's reference value (given, or " +
-                      (suite.reference_from.empty() ? std::string("none")
-                                                    : "the optimum " + suite.reference_from +
-                                                          " proves") +
-                      ") at its time to best; an unsolved run counts twice the time limit of "
-                : std::string("Mean time over each solver's problem runs, an unsolved run "
-                              "(infeasible, failed, or stopped by a limit) counting twice the "
-                              "time limit of "))
+        << "Mean time over each solver's problem runs: " << solved_rule_text(suite)
+        << "; an unsolved run (or one not solved in time) counts twice the time limit of "
         << statistic_text(s.par2.front().time_limit)
         << " s (the suite's toy time limit, else the slowest run's time).\n\n"
            "| solver | runs | solved | PAR-2 s |\n| --- | ---: | ---: | ---: |\n";

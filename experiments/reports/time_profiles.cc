@@ -76,6 +76,23 @@ TimedRun problem_timed_run(const Suite& suite, const SuiteOutcome& outcome,
   return {solved, std::isnan(seconds) ? 0.0 : seconds};
 }
 
+std::string solved_rule_text(const Suite& suite) {
+  const std::string stop_rule =
+      "when it is feasible and its solver stopped on its own (completed, proven optimal or "
+      "target reached)";
+  const bool given = !suite.references.empty(), from = !suite.reference_from.empty();
+  if (!given && !from) return "a run is solved " + stop_rule;
+  std::string source = given ? "the suite's references:" : "";
+  if (from) source += (given ? ", else " : "") + std::string("the optimum ") + suite.reference_from + " proves";
+  std::string text = "a run is solved when it is feasible and its cost is within " +
+                     statistic_text(suite.reference_tolerance) +
+                     " of its problem's reference value (" + source + "), at its time to best";
+  bool every_problem_given = true;
+  for (const SuiteProblem& p : suite.problems) every_problem_given = every_problem_given && suite.references.count(p.label);
+  if (from || !every_problem_given) text += "; on a problem without a reference, " + stop_rule;
+  return text;
+}
+
 TimeProfiles problem_time_profiles(const Suite& suite, const SuiteOutcome& outcome) {
   TimeProfiles p;
   const std::vector<std::string> columns = metric_columns(suite);

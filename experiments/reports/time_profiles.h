@@ -43,6 +43,13 @@ std::optional<double> problem_reference(const Suite& suite, const SuiteOutcome& 
 TimedRun problem_timed_run(const Suite& suite, const SuiteOutcome& outcome,
                            const std::vector<std::string>& columns, const RunResult& run);
 
+// The rule above as this suite applies it, in words, for the legends that state it (the
+// report's "Solved against time", the summary's PAR-2): "a run is solved when it is
+// feasible and its cost is within 1e-09 of its problem's reference value (the suite's
+// references:), at its time to best" or the stop rule, and both when some problem may
+// have no reference.
+std::string solved_rule_text(const Suite& suite);
+
 struct TimeProfiles {
   std::vector<std::string> solvers;    // problem solver labels with at least one run, suite order
   std::vector<std::string> instances;  // problem labels with at least one run, suite order

@@ -21,16 +21,6 @@ constexpr const char* kExtraColumns =
     "visible,desired_height,desired_distance,desired_orientation";
 constexpr const char* kCutReasonColumn = "cut_reason";
 
-// A cut reason as written: a word without commas, quotes or line breaks ("none" if empty).
-std::string reason_cell(const std::string& reason) {
-  if (reason.empty()) return "none";
-  std::string cell = reason;
-  for (char& c : cell) {
-    if (c == ',' || c == '"' || c == '\n' || c == '\r') c = '-';
-  }
-  return cell;
-}
-
 // One CSV cell: its text without surrounding blanks (and a Windows line end), and the
 // 1-based character column where it starts, for messages.
 struct Cell {
@@ -70,6 +60,15 @@ std::string unquote(const std::string& text) {
 
 }  // namespace
 
+std::string trace_word(const std::string& text) {
+  if (text.empty()) return "none";
+  std::string cell = text;
+  for (char& c : cell) {
+    if (c == ',' || c == '"' || c == '\n' || c == '\r') c = '-';
+  }
+  return cell;
+}
+
 std::string trace_header() {
   return std::string(kPublicColumns) + "," + kExtraColumns + "," + kCutReasonColumn;
 }
@@ -93,14 +92,14 @@ void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows)
                     r.character_yaw, r.camera.x(), r.camera.y(), r.camera.z(), r.target.x(),
                     r.target.y(), r.target.z(), r.cut ? 1 : 0, r.cost, r.solve_us,
                     r.controller_visible ? 1 : 0, r.desired_height, r.desired_distance,
-                    r.desired_orientation, reason_cell(r.cut_reason).c_str());
+                    r.desired_orientation, trace_word(r.cut_reason).c_str());
       if (lens || shots) {
         std::string text(line);
         text.pop_back();  // the newline
         char cells[64];
         std::snprintf(cells, sizeof cells, ",%.4f,%.4f", r.fov, r.roll);
         out << text << cells;
-        if (shots) out << "," << reason_cell(r.shot);
+        if (shots) out << "," << trace_word(r.shot);
         out << "\n";
         continue;
       }

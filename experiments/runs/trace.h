@@ -47,6 +47,10 @@ struct TraceRow {
 
 // The header line, without a trailing newline.
 std::string trace_header();
+// A word column's cell (cut_reason, shot) as the trace writes it: "none" when empty, commas,
+// quotes and line breaks as '-', so it stays one CSV cell (and other views of a trace, the
+// Python module's array, hold the same text).
+std::string trace_word(const std::string& text);
 // Writes the trace to `path` atomically enough for resumable suites: to path + ".tmp", then
 // renamed. Throws std::runtime_error naming the path on failure.
 void write_trace_csv(const std::string& path, const std::vector<TraceRow>& rows);

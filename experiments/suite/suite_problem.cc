@@ -29,7 +29,9 @@ LoadedSuiteProblem load_suite_problem(const SuiteProblem& p) {
       break;
     case SuiteProblem::Kind::kProblemFile: {
       if (ends_with(p.path, ".yaml") || ends_with(p.path, ".yml")) {
-        out.problem = csp::read_problem_file(p.path);
+        csp::LoadedProblem loaded = csp::load_problem_file(p.path);
+        out.problem = std::move(loaded.problem);
+        out.value_labels = std::move(loaded.value_labels);
       } else if (ends_with(p.path, ".wcsp") || ends_with(p.path, ".wcsp.gz") ||
                  ends_with(p.path, ".wcsp.xz") || ends_with(p.path, ".wcsp.bz2")) {
         out.problem = csp::read_wcsp_file(p.path);

@@ -12,6 +12,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "sightline/csp/problem.h"
 #include "sightline/experiments/suite/suite.h"
@@ -24,6 +25,8 @@ struct LoadedSuiteProblem {
   // Attacking pairs / conflicting edges of an assignment; empty for problem files.
   std::function<std::size_t(std::span<const double>)> count_broken;
   std::string broken_name;  // "attacking pairs", "conflicts"
+  // A problem file's value labels (csp::LoadedProblem::value_labels); empty for the others.
+  std::vector<std::vector<std::string>> value_labels;
 };
 
 // Throws csp::InputError for unreadable or malformed files and unknown extensions

@@ -428,6 +428,7 @@ void BranchAndBoundSearch::run(const csp::Problem& problem, std::span<const doub
     if (s.feasible()) {
       have_incumbent_ = true;
       ub_ = s.soft;
+      budget.note_best(full_evaluations_, 0, &s);  // the start is the first incumbent
     }
   }
   const bool consistent = initial_propagation();

@@ -181,6 +181,7 @@ void SoftArcSearch::run(const csp::Problem& problem, const WcspView& view,
       have_incumbent_ = true;
       ub_ = static_cast<std::int64_t>(std::llround(s.soft));
       optimal_count_ = 0;  // the search visits the start again if it is optimal
+      budget.note_best(full_evaluations_, 0, &s);  // the start is the first incumbent
     }
   }
   state_.set_stop_check([this] { return budget_->exhausted(full_evaluations_, nodes_); });

@@ -60,6 +60,9 @@ class TabuSearch {
     std::size_t strength = base_strength;
     if (n_ > 0 && rebuild(best_)) {
       best_score_ = table_.score();
+      // The start is the first best (time to best 0 when nothing improves on it).
+      best_seconds_ = budget_.elapsed_seconds();
+      budget_.record_best(evaluations_, best_seconds_, &best_score_);
       tabu_until_.assign(table_.entries(), 0);
       start_penalty();
       scan_all_ = table_.entries() <= static_cast<std::uint64_t>(options_.scan_all_below);

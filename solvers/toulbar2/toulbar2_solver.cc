@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "sightline/csp/files/decimal_costs.h"
 #include "sightline/csp/files/wcsp_writer.h"
 #include "sightline/solvers/detail/start.h"
 
@@ -65,13 +67,16 @@ class TempDir {
 };
 
 struct Run {
-  int status = 0;            // waitpid status
-  bool interrupted = false;  // sent SIGINT at the time limit
+  int status = 0;               // waitpid status
+  bool interrupted = false;     // sent SIGINT, at the time limit or on a stop request
+  bool stop_requested = false;  // on a stop request (SolveLimits::stop)
 };
 
 // Runs `argv` with stdout and stderr to `output`; interrupts it at `time_limit` seconds
-// (0 = none) and kills it if it has not stopped a second after that.
-Run run_program(const std::vector<std::string>& args, const fs::path& output, double time_limit) {
+// (0 = none) or when `limits` asks to stop, and kills it if it has not stopped a second
+// after that.
+Run run_program(const std::vector<std::string>& args, const fs::path& output, double time_limit,
+                const SolveLimits& limits) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -88,6 +93,7 @@ Run run_program(const std::vector<std::string>& args, const fs::path& output, do
     throw std::runtime_error("toulbar2: cannot run '" + args[0] + "': " + std::strerror(error));
   }
   Run run;
+  double interrupted_at = 0;
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -98,11 +104,13 @@ Run run_program(const std::vector<std::string>& args, const fs::path& output, do
     if (done < 0 && errno != EINTR) {
       throw std::runtime_error(std::string("toulbar2: waitpid failed: ") + std::strerror(errno));
     }
-    if (time_limit > 0 && !run.interrupted && elapsed() >= time_limit) {
+    if (!run.interrupted && ((time_limit > 0 && elapsed() >= time_limit) || limits.stop_requested())) {
       kill(pid, SIGINT);  // toulbar2 stops as on its own timer, writing its best
       run.interrupted = true;
+      run.stop_requested = limits.stop_requested();
+      interrupted_at = elapsed();
     }
-    if (run.interrupted && elapsed() >= time_limit + 1.0) kill(pid, SIGKILL);
+    if (run.interrupted && elapsed() >= interrupted_at + 1.0) kill(pid, SIGKILL);
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
 }
@@ -133,6 +141,10 @@ std::uint64_t nodes_of(const std::string& text) {
   return begin < at ? std::stoull(text.substr(begin, at - begin)) : 0;
 }
 
+// .wcsp costs are integers: fractional weighted costs go scaled by a power of ten, up to
+// kMaxCostDecimals places, and toulbar2's reported costs are divided back.
+const csp::WcspWriteOptions kWriting{csp::kMaxCostDecimals};
+
 }  // namespace
 
 const OptionSchema<Toulbar2Solver::Options>& Toulbar2Solver::Options::schema() {
@@ -159,7 +171,7 @@ std::string Toulbar2Solver::unsuitable_reason(const csp::Problem& problem) const
   NullBuffer null;
   std::ostream out(&null);
   try {
-    csp::write_wcsp(problem, out);
+    csp::write_wcsp(problem, out, kWriting);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -179,9 +191,10 @@ void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const dou
   const fs::path wcsp = dir.path() / "problem.wcsp";
   const fs::path solution = dir.path() / "solution.txt";
   const fs::path output = dir.path() / "output.txt";
+  double scale = 1;  // toulbar2's costs are the problem's times this
   {
     std::ofstream out(wcsp);
-    csp::write_wcsp(problem, out);  // throws std::invalid_argument: see unsuitable_reason
+    scale = csp::write_wcsp(problem, out, kWriting);  // std::invalid_argument: see unsuitable_reason
     if (!out) throw std::runtime_error("toulbar2: cannot write " + wcsp.string());
   }
   std::vector<std::string> args = {options_.binary, wcsp.string(), "-w=" + solution.string(),
@@ -193,7 +206,7 @@ void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const dou
   if (context.limits.max_iterations) {
     args.push_back("-bt=" + std::to_string(context.limits.max_iterations));
   }
-  const Run run = run_program(args, output, time_limit);
+  const Run run = run_program(args, output, time_limit, context.limits);
   const std::string report = read_text(output);
   result.iterations = nodes_of(report);
   result.evaluations = 0;
@@ -229,7 +242,9 @@ void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const dou
   } else {
     reported = number_after_last(report, "New solution: ");
     if (const auto primal = number_after_last(report, "Primal bound: ")) reported = primal;
-    if (time_expired) {
+    if (run.stop_requested) {
+      result.stop = StopReason::kInterrupted;
+    } else if (time_expired) {
       result.stop = StopReason::kTimeLimit;
     } else if (context.limits.max_iterations && report.find("Primal bound") != std::string::npos) {
       result.stop = StopReason::kIterationLimit;
@@ -241,9 +256,11 @@ void Toulbar2Solver::solve_into(const csp::Problem& problem, std::span<const dou
     }
   }
   finish_result(problem, context, budget, result);
-  if (found && reported && *reported != result.score.soft) {
-    message << "; toulbar2 reports cost " << *reported << " but the problem scores "
-            << result.score.soft;
+  if (found && reported) {
+    const double cost = *reported / scale;
+    if (std::abs(cost - result.score.soft) > 1e-9 * std::max(1.0, std::abs(cost))) {
+      message << "; toulbar2 reports cost " << cost << " but the problem scores " << result.score.soft;
+    }
   }
   if (found && !result.feasible()) message << "; its solution breaks a hard constraint here";
   if (options_.keep_files) {

@@ -2,7 +2,10 @@
 // problem, so every discrete problem the project can write as .wcsp can be solved (and the
 // project's own solvers checked) by toulbar2 from the same command line.
 //
-// A solve writes the problem as .wcsp (csp/files/wcsp_writer.h) into a fresh temporary
+// A solve writes the problem as .wcsp (csp/files/wcsp_writer.h; fractional weighted costs
+// multiplied by the fewest power of ten, at most 10^6, that makes each an integer, and the
+// costs toulbar2 reports divided back; a cost with more than 6 decimal places makes the
+// problem unsuitable, saying so) into a fresh temporary
 // directory, runs the toulbar2 binary on it with posix_spawn (no shell), its output going to
 // a file there, and reads back the last solution it wrote (-w: value indices, one per
 // variable), which is mapped to domain values and scored by Problem::score like any
@@ -16,7 +19,8 @@
 // rounded up, and is interrupted with SIGINT at the limit, which makes it stop and write its
 // best, as it does on its own timer); an iteration limit becomes toulbar2's backtrack limit
 // (-bt); evaluations are not toulbar2's notion and are not limited (one is counted: the
-// score of its solution). Without a limit toulbar2 runs until it proves optimality.
+// score of its solution). Without a limit toulbar2 runs until it proves optimality. A stop
+// request (SolveLimits::stop) interrupts it as the time limit does.
 //
 // Why a target of its own (sightline::toulbar2, registered from apps): it needs the .wcsp
 // writer of csp_files, and `solvers` does not depend on csp_files (docs/ARCHITECTURE.md).
@@ -45,7 +49,7 @@ class Toulbar2Solver : public Solver {
 
   Toulbar2Solver(std::string name, Options options);
   std::string name() const override { return name_; }
-  // Discrete problems of tables and all_differents with integer costs (what .wcsp holds).
+  // Discrete problems whose weighted costs have at most 6 decimal places (.wcsp, scaled).
   std::string unsuitable_reason(const csp::Problem& problem) const override;
   void solve_into(const csp::Problem& problem, std::span<const double> start,
                   const SolveContext& context, SolverResult& result) override;

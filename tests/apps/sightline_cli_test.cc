@@ -368,6 +368,33 @@ std::string json_field(const std::string& json, const std::string& expression) {
   return output.substr(0, output.find_last_not_of('\n') + 1);
 }
 
+// The costliest-constraints table and --format json name a constraint the same way: its
+// label (with its scope when one label covers several scopes), else its kind over its
+// variables' names, never by variable ids.
+TEST(SightlineCli, TextAndJsonNameViolatedConstraintsByTheirVariablesNames) {
+  const TempFile file("names.yaml", R"(name: names
+variables:
+  - {name: r, count: 6, int: [0, 1]}
+constraints:
+  - {kind: not_equal, label: no clash, scopes: [[r0, r1], [r1, r2], [r0, r2]], weight: 3}
+  - {kind: equals, scope: [r5], value: 1}
+  - {kind: equals, scope: [r5], value: 0, weight: 2, label: r5 off}
+)");
+  const Outcome text = run("solve " + file.path() + " --solver bnb");
+  ASSERT_EQ(text.status, 0) << text.output;
+  EXPECT_TRUE(contains(text.output, "equals(r5)")) << text.output;
+  EXPECT_TRUE(contains(text.output, "no clash(r")) << text.output;
+  EXPECT_FALSE(contains(text.output, "x5")) << text.output;
+  const Outcome json = run("solve " + file.path() + " --solver bnb --format json");
+  ASSERT_EQ(json.status, 0) << json.output;
+  const std::string names = json_field(json.output, "sorted(c['constraint'] for c in d['violated'])");
+  EXPECT_TRUE(contains(names, "'equals(r5)'")) << names;
+  const std::string clash =
+      json_field(json.output, "[c['constraint'] for c in d['violated'] if c['constraint'].startswith('no clash')][0]");
+  EXPECT_TRUE(contains(clash, "no clash(r")) << names;
+  EXPECT_TRUE(contains(text.output, clash)) << clash << " in\n" << text.output;
+}
+
 TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
   const std::string problems = std::string(SIGHTLINE_SOURCE_DIR) + "/examples/problems/";
   Outcome o = run("solve " + problems + "australia.yaml --solver bnb --format json");

@@ -115,6 +115,11 @@ TEST(ProblemBuilder, ErrorsNameWhatIsWrong) {
               b.constrain("not_equal", {"x", "x"});
             }).find("twice"),
             std::string::npos);
+  // A number where a word is wanted is quoted as written: '5', not '5.000000'.
+  const std::string op = message_of([&] {
+    b.constrain("linear", {"x", "y"}, spec_from({{"op", 5}, {"rhs", 2}}));
+  });
+  EXPECT_NE(op.find("got '5'"), std::string::npos) << op;
   EXPECT_EQ(b.problem().num_constraints(), 0u);
 }
 

@@ -115,7 +115,7 @@ TEST(ExpressionConstraint, ParseErrorsAndUnknownNamesAreInputErrorsAtTheFormula)
       "  - {names: [x, y], real: [0, 1]}\n"
       "parameters: {gap: 1}\n"
       "constraints:\n";
-  for (const char* formula : {"x +* y", "x + zz", "abs(x", "gap - w"}) {
+  for (const char* formula : {"x +* y", "x + zz", "abs(x", "gap - w", "x + + "}) {
     const std::string text =
         head + "  - {kind: expression, scope: [x, y], formula: \"" + formula + "\"}\n";
     try {
@@ -125,6 +125,8 @@ TEST(ExpressionConstraint, ParseErrorsAndUnknownNamesAreInputErrorsAtTheFormula)
       EXPECT_EQ(e.where().file, "expr.yaml");
       EXPECT_EQ(e.where().line, 5) << e.what();
       EXPECT_NE(std::string(e.what()).find(formula), std::string::npos) << e.what();
+      // A parse error, never muparser's "Internal error" (what it says of "x + +").
+      EXPECT_EQ(std::string(e.what()).find("Internal error"), std::string::npos) << e.what();
     }
   }
 }

@@ -62,6 +62,22 @@ TEST(Problem, BreakdownListsEveryConstraintInIdOrder) {
   EXPECT_DOUBLE_EQ(parts[1].cost + parts[2].cost, p->cost(Assignment{2, 2, 1}));
 }
 
+// Messages and tables name a constraint by its label, else by its kind over its variables'
+// names; a long scope is cut to its first six names and its size.
+TEST(Problem, NamesAConstraintByItsLabelElseByItsVariablesNames) {
+  auto p = small_problem();
+  EXPECT_EQ(p->constraint_name(0), "not_equal(x, y)");
+  EXPECT_EQ(p->constraint_name(1), "linear(x, y, z)");
+  p->mutable_constraint(2).set_label("z near 3");
+  EXPECT_EQ(p->constraint_name(2), "z near 3");
+  Problem queens("queens");
+  queens.add_variables("q", 1000, Domain::integer_range(0, 999));
+  std::vector<VariableId> all(1000);
+  for (VariableId v = 0; v < 1000; ++v) all[v] = v;
+  queens.add_constraint(std::make_unique<AllDifferent>(all));
+  EXPECT_EQ(queens.constraint_name(0), "all_different(q0, q1, q2, q3, q4, q5, ... 1000 variables)");
+}
+
 TEST(Problem, DeltaEqualsFullReEvaluationForEveryMove) {
   const auto p = small_problem();
   for (double x = 0; x <= 3; ++x) {

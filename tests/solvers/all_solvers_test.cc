@@ -1,14 +1,17 @@
 // Every registered solver, on the same tiny problems: each must find the grid's optimum
 // (exactly on the discrete problem, within the lattice's own error on the continuous one)
-// from several starts, be deterministic for a seed, honour the limits, and answer bad
+// from several starts, be deterministic for a seed, honour the limits and a stop request,
+// and answer bad
 // options with messages that name the culprit. Solvers that declare a problem unsuitable
 // are skipped on it. Pipelines must never end worse than their first stage.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 #include "sightline/solvers/registry.h"
+#include "tests/solvers/stop_request.h"
 #include "tests/solvers/test_problems.h"
 
 namespace sightline::solvers {
@@ -135,6 +138,23 @@ TEST_P(EverySolver, StopsSoonAfterATimeLimit) {
     const SolverResult r = solver->solve(*problem, problem->default_assignment(), context);
     EXPECT_TRUE(r.stop == StopReason::kTimeLimit || natural_end(r.stop));
     EXPECT_LT(r.wall_seconds, 5.0);
+  }
+}
+
+// A stop request (SolveLimits::stop: Ctrl-C in the Python module), set from another thread
+// during a solve with no limit at all: the solver ends soon with its best so far, saying it
+// was interrupted (or its own end, when it finished first).
+TEST_P(EverySolver, StopsSoonWhenAskedToFromAnotherThread) {
+  using std::chrono::milliseconds;
+  for (const auto& problem : {tiny_discrete_problem(), tiny_continuous_problem(),
+                              test_problems::unfinishable_problem()}) {
+    auto solver = make();
+    if (!solver->unsuitable_reason(*problem).empty()) continue;
+    // The tiny ones may end first; on the other no solver ends (bnb would search for hours).
+    const SolverResult r = testing::solve_asked_to_stop(*solver, *problem, milliseconds(50));
+    EXPECT_TRUE(r.stop == StopReason::kInterrupted || natural_end(r.stop)) << r.brief_report(GetParam());
+    EXPECT_LT(r.wall_seconds, 5.0) << r.brief_report(GetParam());
+    EXPECT_NO_THROW(problem->check_assignment(r.best));
   }
 }
 

@@ -1,6 +1,7 @@
 // The anytime trajectory (SolveContext::want_trajectory, SolverResult::trajectory) of every
 // registered discrete solver: points in time order, each better than the one before, the last
-// equal to the result's score, every point's time within the solve; none kept unless asked.
+// equal to the result's score and at the result's time to best, every point's time within
+// the solve; none kept unless asked.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -47,6 +48,9 @@ TEST(AnytimeTrajectory, EveryDiscreteSolverKeepsItsImprovementsInOrderEndingAtIt
     const AnytimePoint& last = r.trajectory.back();
     EXPECT_FALSE(last.score.better_than(r.score) || r.score.better_than(last.score)) << name;
     EXPECT_LE(last.seconds, r.wall_seconds + 1e-9) << name;
+    // Time and evaluations to best (results.csv's time_to_best_s) are the last point's.
+    EXPECT_EQ(r.best_found_seconds, last.seconds) << name;
+    EXPECT_EQ(r.evaluations_at_best, last.evaluations) << name;
     // Not asked: nothing kept.
     SolveContext plain = context;
     plain.want_trajectory = false;
@@ -56,6 +60,35 @@ TEST(AnytimeTrajectory, EveryDiscreteSolverKeepsItsImprovementsInOrderEndingAtIt
                 r.score.soft, last.seconds);
   }
   EXPECT_GE(solvers_seen, 5);  // grid, sls, bnb, tabu, lns (chain: not a chain)
+}
+
+// A problem every solver solves at once, from its start or its first step (a zero-cost
+// assignment: the target): when the best was found is still recorded, and it is the last
+// point of the trajectory (lns reaching the target in its greedy start recorded none).
+TEST(AnytimeTrajectory, ASolverThatReachesItsTargetAtOnceRecordsWhen) {
+  auto p = std::make_unique<csp::Problem>("easy");
+  p->add_variables("x", 6, csp::Domain::integer_range(0, 3));
+  for (csp::VariableId v = 0; v < 6; ++v) {
+    p->add_constraint(std::make_unique<csp::Table>(
+        std::vector<csp::VariableId>{v}, std::vector<csp::Table::Entry>{{{0}, 0.0}}, 1.0));
+  }
+  for (const std::string& name : SolverRegistry::global().names()) {
+    auto solver = SolverRegistry::global().create(name);
+    if (!solver->unsuitable_reason(*p).empty()) continue;
+    for (const bool from_optimum : {false, true}) {
+      SolveContext context;
+      context.want_trajectory = true;
+      context.limits.time_limit_seconds = 0.2;
+      const csp::Assignment start = from_optimum ? csp::Assignment(6, 0.0) : p->default_assignment();
+      const SolverResult r = solver->solve(*p, start, context);
+      ASSERT_FALSE(r.trajectory.empty()) << name;
+      EXPECT_EQ(r.cost(), 0) << name;
+      const std::string what = name + (from_optimum ? " from the optimum" : " from the middle");
+      EXPECT_GE(r.best_found_seconds, 0) << what;
+      EXPECT_EQ(r.best_found_seconds, r.trajectory.back().seconds) << what;
+      EXPECT_EQ(r.evaluations_at_best, r.trajectory.back().evaluations) << what;
+    }
+  }
 }
 
 TEST(AnytimeTrajectory, APipelinePutsItsStagesImprovementsOnItsOwnClock) {

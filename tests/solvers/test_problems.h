@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -88,6 +89,29 @@ inline std::unique_ptr<csp::Problem> tiny_continuous_problem() {
 inline double continuous_lattice_tolerance(int points) {
   const double half_step = 1.0 / (points - 1);
   return kContinuousCurvature * 2 * half_step * half_step / 2;
+}
+
+// A random Max-CSP no exact solver finishes in seconds (60 variables of 8 values, 400 binary
+// cost tables of costs 0..9, optimum above 0), for tests that must stop a solve from outside.
+inline std::unique_ptr<csp::Problem> unfinishable_problem() {
+  auto p = std::make_unique<csp::Problem>("unfinishable");
+  p->add_variables("v", 60, csp::Domain::integer_range(0, 7));
+  std::uint64_t state = 1;
+  auto next = [&state](std::uint64_t n) {  // a small LCG: the problem is the same everywhere
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (state >> 33) % n;
+  };
+  for (int k = 0; k < 400; ++k) {
+    const auto a = static_cast<csp::VariableId>(next(60));
+    auto b = static_cast<csp::VariableId>(next(60));
+    while (b == a) b = static_cast<csp::VariableId>(next(60));
+    std::array<double, 64> costs{};
+    for (double& c : costs) c = static_cast<double>(next(10));
+    add(*p, {a, b}, [costs](const auto& v) {
+      return costs[static_cast<std::size_t>(v[0]) * 8 + static_cast<std::size_t>(v[1])];
+    });
+  }
+  return p;
 }
 
 // Starts for the solver tests. The continuous ones lie within a quarter of the box width of

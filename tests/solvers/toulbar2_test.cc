@@ -2,11 +2,13 @@
 // toulbar2's own instances it proves the same optimum as bnb (and the known one), with a
 // solution that scores that cost here; it proves infeasibility; it keeps a time limit on a
 // problem it cannot finish, returning its best; and it declares unsuitable what .wcsp cannot
-// hold. Registration follows the binary's presence.
+// hold (costs of more than 6 decimal places; fractional ones go scaled and agree with bnb).
+// Registration follows the binary's presence.
 #include "sightline/solvers/toulbar2/toulbar2_solver.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <random>
 
@@ -15,6 +17,7 @@
 #include "sightline/csp/kinds/table.h"
 #include "sightline/domains/colouring/colouring_problem.h"
 #include "sightline/solvers/registry.h"
+#include "tests/solvers/stop_request.h"
 
 namespace sightline::solvers {
 namespace {
@@ -115,6 +118,16 @@ TEST(Toulbar2Solver, StopsAtTheTimeLimitWithItsBestSolution) {
   EXPECT_EQ(r.message.find("toulbar2 reports cost"), std::string::npos) << r.message;
 }
 
+// A stop request (Ctrl-C in the Python module) interrupts the program as the time limit does.
+TEST(Toulbar2Solver, StopsWhenAskedToWithItsBestSolution) {
+  SKIP_WITHOUT_TOULBAR2();
+  const auto p = hard_max_csp();
+  const SolverResult r = testing::solve_asked_to_stop(*toulbar2(), *p, std::chrono::milliseconds(500));
+  EXPECT_EQ(r.stop, StopReason::kInterrupted) << r.brief_report("toulbar2");
+  EXPECT_TRUE(r.feasible());
+  EXPECT_LT(r.wall_seconds, 3.0);
+}
+
 TEST(Toulbar2Solver, DeclaresUnsuitableWhatDotWcspCannotHold) {
   csp::Problem continuous;
   continuous.add_variable("x", csp::Domain::real_interval(0, 1));
@@ -123,8 +136,14 @@ TEST(Toulbar2Solver, DeclaresUnsuitableWhatDotWcspCannotHold) {
   const auto x = fractional.add_variable("x", csp::Domain::integer_range(0, 1));
   fractional.add_constraint(std::make_unique<csp::Table>(
       std::vector<csp::VariableId>{x}, std::vector<csp::Table::Entry>{{{1}, 0.5}}, 0.0));
-  EXPECT_NE(toulbar2()->unsuitable_reason(fractional).find("integer"), std::string::npos)
-      << toulbar2()->unsuitable_reason(fractional);
+  EXPECT_EQ(toulbar2()->unsuitable_reason(fractional), "");  // scaled by 10
+  // Seven decimal places: more than the scale holds exactly, said by the constraint's name.
+  fractional.add_constraint(std::make_unique<csp::Table>(
+      std::vector<csp::VariableId>{x}, std::vector<csp::Table::Entry>{{{0}, 0.1234567}}, 0.0));
+  fractional.mutable_constraint(1).set_label("fine cost");
+  const std::string why = toulbar2()->unsuitable_reason(fractional);
+  EXPECT_NE(why.find("fine cost"), std::string::npos) << why;
+  EXPECT_NE(why.find("6 decimal places"), std::string::npos) << why;
 }
 
 }  // namespace
@@ -144,8 +163,10 @@ void expect_same_optimum_as_bnb(const csp::Problem& problem) {
   ASSERT_EQ(exact.stop, StopReason::kProvenOptimal) << problem.name();
   const SolverResult r = toulbar2()->solve(problem, problem.default_assignment(), {});
   EXPECT_EQ(r.stop, StopReason::kProvenOptimal) << r.brief_report("toulbar2");
-  EXPECT_EQ(r.cost(), exact.cost()) << problem.name() << ": " << r.brief_report("toulbar2");
+  EXPECT_NEAR(r.cost(), exact.cost(), 1e-9) << problem.name() << ": " << r.brief_report("toulbar2");
   EXPECT_EQ(problem.score(r.best).soft, r.cost()) << problem.name();
+  // toulbar2's own cost (scaled back when the costs are fractional) agrees with the score.
+  EXPECT_EQ(r.message, "toulbar2 proved optimality") << problem.name();
 }
 
 TEST(Toulbar2Solver, SolvesATimetableOfAnyKindsWithBnbsOptimum) {
@@ -181,6 +202,32 @@ TEST(Toulbar2Solver, SolvesTheColouringProblemsOfCompareWithBnbsOptimum) {
   for (const auto& [file, colours] : std::vector<std::pair<std::string, int>>{
            {"australia.yaml", 3}, {"australia.yaml", 2}, {"queen5_5.col", 5}, {"myciel5.col", 6}}) {
     const auto problem = colouring::build_colouring_problem(colouring::read_graph_file(graphs + file), colours);
+    expect_same_optimum_as_bnb(*problem);
+  }
+}
+
+}  // namespace
+}  // namespace sightline::solvers
+
+namespace sightline::solvers {
+namespace {
+
+// Fractional weighted costs (.wcsp holds integers: the problem goes scaled by 10^d): the
+// audit's abs_deviation of weight 1.5, costs in halves and in tenths.
+TEST(Toulbar2Solver, SolvesFractionalCostsWithBnbsOptimum) {
+  SKIP_WITHOUT_TOULBAR2();
+  for (const double step : {0.5, 0.1}) {
+    csp::ProblemBuilder b(step == 0.5 ? "halves" : "tenths");
+    for (int i = 0; i < 6; ++i) b.integer("r" + std::to_string(i), 0, 4);
+    for (int i = 0; i < 6; ++i) {
+      const std::string a = "r" + std::to_string(i), c = "r" + std::to_string((i + 1) % 6);
+      b.constrain("not_equal", {a, c}, {}, 3 * step);
+      b.constrain("abs_deviation", {a}, csp::spec_from({{"target", (i * 7) % 5}}), (i + 1) * step);
+    }
+    b.constrain("linear", {"r0", "r3"}, csp::spec_from({{"op", ">="}, {"rhs", 6}}), 5 * step);
+    b.constrain("equals", {"r5"}, csp::spec_from({{"value", 2}}), 1, true);
+    const auto problem = b.build();
+    SCOPED_TRACE(problem->name());
     expect_same_optimum_as_bnb(*problem);
   }
 }

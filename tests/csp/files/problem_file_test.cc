@@ -160,6 +160,9 @@ const BadFile kBadFiles[] = {
      "variables: [{name: x, int: [0, 1]}]\nconstraints:\n"
      "  - {kind: abs_deviation, scope: [x], hard: maybe}\n",
      3, "true or false"},
+    // The alias is the list holding it: once a stack overflow (fuzz/README.md).
+    {"alias inside the node its anchor names", "variables: &v\n  - *v\n", 1,
+     "nested more than 1000 deep"},
 };
 
 class ProblemFileErrors : public ::testing::TestWithParam<BadFile> {};
@@ -360,6 +363,30 @@ constraints:
 constraints:
   - {kind: expression, scope: [x], formula: "x", constants: {x: 1}}
 )yaml", "clash.yaml"), InputError);
+}
+
+}  // namespace
+}  // namespace sightline::csp
+
+namespace sightline::csp {
+namespace {
+
+// One label over several scopes names each constraint by its scope too, so messages,
+// tables and breakdowns tell them apart; a single scope keeps the label as written, and an
+// unlabelled constraint is its kind over its variables' names.
+TEST(ProblemFileLabels, ALabelSharedBySeveralScopesNamesEachByItsScope) {
+  const auto p = parse_problem(R"yaml(variables:
+  - {name: r, count: 4, int: [0, 2]}
+constraints:
+  - {kind: not_equal, label: no clash, scopes: [[r0, r1], [r2, r3]]}
+  - {kind: not_equal, label: alone, scopes: [[r1, r2]]}
+  - {kind: equals, scope: [r3], value: 1}
+)yaml", "names.yaml");
+  ASSERT_EQ(p->num_constraints(), 4u);
+  EXPECT_EQ(p->constraint_name(0), "no clash(r0, r1)");
+  EXPECT_EQ(p->constraint_name(1), "no clash(r2, r3)");
+  EXPECT_EQ(p->constraint_name(2), "alone");
+  EXPECT_EQ(p->constraint_name(3), "equals(r3)");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "sightline/csp/kinds/builder.h"
 
 #include <random>
+#include <set>
 #include <sstream>
 
 #include "tests/csp/brute_force.h"
@@ -16,6 +17,7 @@
 #include "sightline/csp/files/table_writers.h"
 #include "sightline/csp/files/wcsp_reader.h"
 #include "sightline/csp/kinds/all_different.h"
+#include "sightline/csp/kinds/constraint_kinds.h"
 #include "sightline/csp/kinds/not_equal.h"
 #include "sightline/csp/kinds/table.h"
 
@@ -108,6 +110,8 @@ TEST(WcspWriter, RefusesWhatWcspCannotExpress) {
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("not a non-negative integer"), std::string::npos) << e.what();
+    // Named by its variables' names, as every message names a constraint.
+    EXPECT_NE(std::string(e.what()).find("table(x)"), std::string::npos) << e.what();
   }
   Problem r;
   r.add_variable("x", Domain::real_interval(0, 1));
@@ -122,53 +126,112 @@ TEST(WcspWriter, RefusesWhatWcspCannotExpress) {
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("tuples"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not_equal(x, y)"), std::string::npos) << e.what();
+  }
+  // A labelled constraint by its label.
+  q.mutable_constraint(0).set_label("x's price");
+  try {
+    write_wcsp(q, out, WcspWriteOptions{0});
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("x's price"), std::string::npos) << e.what();
   }
 }
 
-struct KindCase {
-  std::string kind;
-  std::vector<std::string> scope;
-  Spec params;
-  double weight;
-  bool hard;
-};
-
-// A constraint of each built-in kind over small finite domains (integer weighted costs).
-std::vector<KindCase> kind_cases() {
-  return {
-      {"not_equal", {"a", "b"}, Spec(), 3, false},
-      {"not_equal", {"a", "c"}, Spec(), 1, true},
-      {"linear", {"a", "b", "c"}, spec_from({{"coefficients", std::vector<double>{1, 2, -1}}, {"op", "<="}, {"rhs", 2}}), 2, false},
-      {"linear", {"a", "c"}, spec_from({{"op", "=="}, {"rhs", 3}}), 1, true},
-      {"abs_deviation", {"b"}, spec_from({{"target", 1}}), 1, false},
-      {"expression", {"a", "b"}, spec_from({{"formula", "abs(a - 2*b)"}}), 1, false},
-      {"all_different", {"a", "b", "c"}, spec_from({{"offsets", std::vector<double>{0, 1, 2}}}), 4, false},
-      {"all_different", {"a", "b", "d"}, Spec(), 1, false},  // d's domain differs: a table
-      {"in", {"d"}, spec_from({{"values", std::vector<double>{0, 5}}}), 2, false},
-  };
+TEST(WcspWriter, ScalesFractionalCostsByTheFewestPowerOfTenWhenAllowed) {
+  Problem p("quarters");
+  p.add_variable("x", Domain::integer_range(0, 2));
+  p.add_constraint(std::make_unique<Table>(std::vector<VariableId>{0},
+                                           std::vector<Table::Entry>{{{1}, 0.25}, {{2}, 1.5}}, 0));
+  std::ostringstream out;
+  EXPECT_EQ(write_wcsp(p, out, WcspWriteOptions{6}), 100.0);
+  // UB = 1 + 150; the tuples' costs 25 and 150.
+  EXPECT_EQ(out.str().substr(0, out.str().find('\n')), "quarters 1 3 1 151");
+  std::istringstream in(out.str());
+  const auto back = parse_wcsp(in, "quarters.wcsp");
+  EXPECT_EQ(back->score(std::vector<double>{1}).soft, 25);
+  std::ostringstream integers;
+  Problem whole("whole");
+  whole.add_variable("x", Domain::integer_range(0, 1));
+  whole.add_constraint(std::make_unique<Table>(std::vector<VariableId>{0},
+                                               std::vector<Table::Entry>{{{1}, 3}}, 0));
+  EXPECT_EQ(write_wcsp(whole, integers, WcspWriteOptions{6}), 1.0);
+  // Seven places are more than six.
+  p.add_constraint(std::make_unique<Table>(std::vector<VariableId>{0},
+                                           std::vector<Table::Entry>{{{1}, 0.1234567}}, 0));
+  EXPECT_THROW(write_wcsp(p, out, WcspWriteOptions{6}), std::invalid_argument);
 }
 
-// Writes a problem holding each case with `write`, reads it back with `read`, and compares
-// the scores of random assignments: soft costs equal, feasibility equal. `by_index`: the
-// format's values are domain indices (.wcsp, .cfn), else the values themselves.
+// The variables every case draws its scope from: small domains of several shapes.
+constexpr const char* kKindVariables = R"(variables:
+  - {name: a, int: [0, 3]}
+  - {name: b, int: [-1, 2]}
+  - {name: c, int: [0, 4]}
+  - {name: d, values: [0, 2, 5]}
+  - {name: e, int: [0, 3]}
+)";
+
+// Problems of one constraint each: every registered kind by its own example
+// (ConstraintKindInfo::example, over its first example_arity variables), soft with weight 3
+// and hard, so a kind is covered by being registered; then the cases examples do not reach
+// (an all_different over differing domains, with offsets; fractional weights).
+struct KindProblem {
+  std::string entry;  // the constraint as a problem file writes it
+  std::unique_ptr<Problem> problem;
+};
+
+std::vector<KindProblem> kind_problems() {
+  std::vector<std::string> entries;
+  const ConstraintKinds& kinds = ConstraintKinds::global();
+  for (const std::string& name : kinds.names()) {
+    const ConstraintKindInfo& info = kinds.get(name, {});
+    std::string scope;
+    for (std::size_t i = 0; i < info.example_arity; ++i) scope += std::string(i ? ", " : "") + "abcde"[i];
+    const std::string fields = info.example.empty() ? "" : ", " + info.example;
+    entries.push_back("{kind: " + name + ", scope: [" + scope + "], weight: 3" + fields + "}");
+    entries.push_back("{kind: " + name + ", scope: [" + scope + "], hard: true" + fields + "}");
+  }
+  entries.push_back("{kind: all_different, scope: [a, b, c], offsets: [0, 1, 2], weight: 4}");
+  entries.push_back("{kind: all_different, scope: [a, b, d]}");  // d's domain differs: a table
+  entries.push_back("{kind: stretch, scope: [a, b, c, e], min: 2, weight: 1.5}");
+  entries.push_back("{kind: linear, scope: [a, c], op: '==', rhs: 3, weight: 0.25}");
+  std::vector<KindProblem> problems;
+  for (const std::string& entry : entries) {
+    problems.push_back({entry, parse_problem("name: kind\n" + std::string(kKindVariables) +
+                                                 "constraints:\n  - " + entry + "\n",
+                                             "kind.yaml")});
+  }
+  return problems;
+}
+
+TEST(KindProblems, TakeEveryRegisteredKind) {
+  const auto problems = kind_problems();
+  std::set<std::string> kinds;
+  for (const auto& p : problems) kinds.insert(std::string(p.problem->constraint(0).kind()));
+  for (const std::string& name : ConstraintKinds::global().names()) EXPECT_TRUE(kinds.count(name)) << name;
+  for (const char* name : {"equals", "not_in", "table", "stretch", "in", "expression"}) {
+    EXPECT_TRUE(kinds.count(name)) << name;
+  }
+}
+
+// Writes each problem with `write` (which returns the factor its costs were multiplied by),
+// reads it back with `read`, and compares the scores of random assignments: soft costs equal
+// (times the factor), feasibility equal. `by_index`: the format's values are domain indices
+// (.wcsp, .cfn), else the values themselves.
 template <class Write, class Read>
-void check_round_trip(const std::vector<KindCase>& cases, Write write, Read read, bool by_index) {
+void check_round_trip(const std::vector<KindProblem>& problems, Write write, Read read,
+                      bool by_index) {
   std::mt19937_64 rng(11);
-  for (const KindCase& k : cases) {
-    ProblemBuilder b("kind-" + k.kind);
-    b.integer("a", 0, 3);
-    b.integer("b", -1, 2);
-    b.integer("c", 0, 4);
-    b.values("d", {0, 2, 5});
-    b.constrain(k.kind, k.scope, k.params.is_map() ? k.params : Spec::map({}), k.weight, k.hard);
-    const std::unique_ptr<Problem> original = b.build();
+  for (const auto& [entry, original] : problems) {
+    SCOPED_TRACE(entry);
     std::stringstream text;
-    write(*original, text);
+    const double scale = write(*original, text);
     const std::unique_ptr<Problem> back = read(text.str());
-    ASSERT_EQ(back->num_variables(), original->num_variables()) << k.kind;
+    const std::size_t n = original->num_variables();
+    ASSERT_EQ(back->num_variables(), n);
     for (int trial = 0; trial < 200; ++trial) {
-      std::vector<double> values(4), written(4);
-      for (VariableId v = 0; v < 4; ++v) {
+      std::vector<double> values(n), written(n);
+      for (VariableId v = 0; v < n; ++v) {
         const Domain& d = original->domain(v);
         const std::size_t i = std::uniform_int_distribution<std::size_t>(0, d.size() - 1)(rng);
         values[v] = d.value_at(i);
@@ -176,35 +239,39 @@ void check_round_trip(const std::vector<KindCase>& cases, Write write, Read read
       }
       const Score want = original->score(values);
       const Score got = back->score(written);
-      EXPECT_EQ(want.feasible(), got.feasible()) << k.kind << " trial " << trial;
+      EXPECT_EQ(want.feasible(), got.feasible()) << "trial " << trial;
       if (want.feasible()) {
-        EXPECT_NEAR(want.soft, got.soft, 1e-9) << k.kind << " trial " << trial;
+        EXPECT_NEAR(want.soft * scale, got.soft, 1e-9 * scale) << "trial " << trial;
       }
     }
   }
 }
 
-// Every built-in kind over finite domains goes to .wcsp as a cost table: read back, the
-// problem scores every assignment as the kind itself does (soft: the weighted cost; hard:
-// feasibility), on random assignments of small random problems.
+// Every registered kind over finite domains goes to .wcsp as a cost table (or its own table,
+// or salldiff): read back, the problem scores every assignment as the kind itself does
+// (soft: the weighted cost, fractional ones scaled to integers; hard: feasibility), on random
+// assignments.
 TEST(WcspWriter, EveryKindIsWrittenAsATableThatScoresAsTheKind) {
-  check_round_trip(kind_cases(), [](const Problem& p, std::ostream& out) { write_wcsp(p, out); },
-                   [](const std::string& text) {
-                     std::istringstream in(text);
-                     return parse_wcsp(in, "kind.wcsp");
-                   },
-                   true);
+  check_round_trip(
+      kind_problems(),
+      [](const Problem& p, std::ostream& out) { return write_wcsp(p, out, WcspWriteOptions{6}); },
+      [](const std::string& text) {
+        std::istringstream in(text);
+        return parse_wcsp(in, "kind.wcsp");
+      },
+      true);
 }
 
 // The same through .cfn and through this project's problem file (sightline convert --to
-// cfn|yaml), with a kind of fractional costs besides (stretch: .wcsp has integer costs only).
+// cfn|yaml).
 TEST(TableWriters, EveryKindGoesToCfnAndToAProblemFileAndScoresAsTheKind) {
-  std::vector<KindCase> cases = kind_cases();
-  cases.push_back({"stretch", {"a", "b", "c"}, spec_from({{"min", 2}}), 1.5, false});
-  check_round_trip(cases, [](const Problem& p, std::ostream& out) { write_cfn(p, out); },
-                   [](const std::string& text) { return parse_cfn(text, "kind.cfn"); }, true);
-  check_round_trip(cases, [](const Problem& p, std::ostream& out) { write_problem_yaml(p, out); },
-                   [](const std::string& text) { return parse_problem(text, "kind.yaml"); }, false);
+  const auto problems = kind_problems();
+  check_round_trip(
+      problems, [](const Problem& p, std::ostream& out) { write_cfn(p, out); return 1.0; },
+      [](const std::string& text) { return parse_cfn(text, "kind.cfn"); }, true);
+  check_round_trip(
+      problems, [](const Problem& p, std::ostream& out) { write_problem_yaml(p, out); return 1.0; },
+      [](const std::string& text) { return parse_problem(text, "kind.yaml"); }, false);
 }
 
 TEST(TableWriters, RefuseAContinuousScopeNamingIt) {

@@ -197,6 +197,30 @@ problems:
   EXPECT_EQ(rows, 20);
 }
 
+// A problem file's labelled values go into runs/<id>.solution.csv as their labels, the way
+// `solve --format json` writes them; unlabelled ones as numbers.
+TEST(SuiteRunner, TheSolutionFileWritesLabelledValuesAsTheirLabels) {
+  ScratchDir dir("runner-labels");
+  dir.write("slots.yaml", R"(name: slots
+variables:
+  - {names: [s0, s1], labels: [Mon_am, Mon_pm, "Tue, am"]}
+  - {name: n, int: [2, 4]}
+constraints:
+  - {kind: equals, scope: [s0], value: 1}
+  - {kind: equals, scope: [s1], value: 2}
+  - {kind: equals, scope: [n], value: 3}
+)");
+  const Suite suite = read_suite_file(dir.write("suite.yaml", R"(name: labels
+problems:
+  instances: [{problem: slots.yaml}]
+  solvers: [bnb]
+)"));
+  const SuiteOutcome outcome = run_suite(suite, options_for(dir.path("out")));
+  ASSERT_EQ(outcome.results.size(), 1u);
+  EXPECT_EQ(read_text(dir.path("out") + "/runs/" + outcome.results[0].id + ".solution.csv"),
+            "variable,value\ns0,Mon_pm\ns1,\"Tue, am\"\nn,3\n");
+}
+
 // A toy suite repeated over seeds with two solvers: stats.csv beside results.csv holds each
 // (problem, solver)'s repetitions and each solver's PAR-2, and the summary shows both.
 TEST(SuiteRunner, WritesStatisticsOfRepetitionsOverSeeds) {

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -186,20 +191,14 @@ TEST(ReportStatistics, PerformanceProfileSvgIsWellFormedWithOnePolylinePerSolver
   EXPECT_DOUBLE_EQ(f.polylines[2].back().second, bottom);
 }
 
-TEST(ReportStatistics, ProblemSuiteReportHasTheSolvedAgainstTimeSection) {
-  Suite suite;
-  suite.name = "toy";
-  suite.problems.push_back({});
-  suite.problems.back().label = "p";
-  suite.toy_solvers.resize(2);
-  suite.toy_solvers[0].label = "A";
-  suite.toy_solvers[1].label = "B";
-  suite.toy_seeds = {1};
+// Problem runs of solvers A and B on problem "p", as results.csv holds them.
+SuiteOutcome two_solver_outcome(const Suite& suite, const std::string& stop) {
   SuiteOutcome outcome;
   const std::vector<std::string> columns = metric_columns(suite);
   for (const char* solver : {"A", "B"}) {
     RunResult r;
     r.kind = "toy";
+    r.id = std::string("run-") + solver;
     r.subject = "p";
     r.solver = solver;
     r.profile = "-";
@@ -208,11 +207,71 @@ TEST(ReportStatistics, ProblemSuiteReportHasTheSolvedAgainstTimeSection) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (columns[c] == "feasible") r.values[c] = "1";
       if (columns[c] == "time_s") r.values[c] = solver[0] == 'A' ? "0.5" : "2";
-      if (columns[c] == "stop") r.values[c] = "completed";
+      if (columns[c] == "time_to_best_s") r.values[c] = "0.1";
+      if (columns[c] == "stop") r.values[c] = stop;
       if (columns[c] == "cost") r.values[c] = "0";
     }
     outcome.results.push_back(r);
   }
+  return outcome;
+}
+
+Suite two_solver_suite() {
+  Suite suite;
+  suite.name = "toy";
+  suite.problems.push_back({});
+  suite.problems.back().label = "p";
+  suite.toy_solvers.resize(2);
+  suite.toy_solvers[0].label = "A";
+  suite.toy_solvers[1].label = "B";
+  suite.toy_seeds = {1};
+  return suite;
+}
+
+// With reference values the legend states the reference rule the figures use, not the
+// solver's own stop; and where source and fallback apply, says so.
+TEST(ReportStatistics, TheSolvedLegendStatesTheRuleTheSuiteUses) {
+  Suite suite = two_solver_suite();
+  std::string html = statistics_report_section(suite, two_solver_outcome(suite, "completed"));
+  EXPECT_NE(html.find("stopped on its own"), std::string::npos) << html;
+  suite.references["p"] = 0;  // given (from values: or a file: alike)
+  html = statistics_report_section(suite, two_solver_outcome(suite, "time limit"));
+  EXPECT_EQ(html.find("stopped on its own"), std::string::npos) << html;
+  EXPECT_NE(html.find("reference value (the suite&#39;s references:), at its time to best"),
+            std::string::npos)
+      << html;
+  suite.reference_from = "B";
+  html = statistics_report_section(suite, two_solver_outcome(suite, "time limit"));
+  EXPECT_NE(html.find("else the optimum B proves"), std::string::npos) << html;
+  EXPECT_NE(html.find("on a problem without a reference"), std::string::npos) << html;
+}
+
+// Anytime curves from 4e6 down to 10310 and 10914: on a linear axis the two finals would be
+// a pixel apart; the axis becomes the cost above 10310 on a log scale, and they separate.
+TEST(ReportStatistics, AnytimeCurvesSpanningOrdersOfMagnitudeGetALogAxisAboveTheBest) {
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / ("sightline-anytime-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(out / "runs");
+  std::ofstream(out / "runs" / "run-A.anytime.csv")
+      << "seconds,evaluations,cost,hard\n0.001,1,4000000,0\n0.01,50,10914,0\n";
+  std::ofstream(out / "runs" / "run-B.anytime.csv")
+      << "seconds,evaluations,cost,hard\n0.001,1,4000000,0\n0.02,90,10310,0\n";
+  Suite suite = two_solver_suite();
+  suite.toy_limits.time_limit_seconds = 1;
+  const std::string html = anytime_report_section(suite, two_solver_outcome(suite, "time limit"),
+                                                  out.string());
+  std::filesystem::remove_all(out);
+  EXPECT_NE(html.find("best cost - 10310 (log scale"), std::string::npos) << html;
+  const std::size_t start = html.find("<svg"), end = html.find("</svg>", start);
+  const Figure f = check_figure(html.substr(start, end + 6 - start));
+  ASSERT_EQ(f.polylines.size(), 2u);
+  // The finals, 10914 and 10310, far apart (more than a tenth of the plot's height).
+  EXPECT_GT(std::abs(f.polylines[0].back().second - f.polylines[1].back().second), f.height / 10);
+}
+
+TEST(ReportStatistics, ProblemSuiteReportHasTheSolvedAgainstTimeSection) {
+  const Suite suite = two_solver_suite();
+  const SuiteOutcome outcome = two_solver_outcome(suite, "completed");
   const std::string html = report_html(suite, outcome, "/nonexistent");
   EXPECT_NE(html.find("<h2>Solved against time</h2>"), std::string::npos);
   EXPECT_NE(html.find("Cactus plot"), std::string::npos);

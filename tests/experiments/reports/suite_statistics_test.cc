@@ -92,6 +92,21 @@ TEST(SuiteStatistics, MarkdownShowsRepetitionsAndPar2Sections) {
   EXPECT_NE(md.find("| B | 3 | 1 | 14.6667 |"), std::string::npos) << md;
 }
 
+// The PAR-2 line says which rule made a run solved: the solver's own stop, or the reference
+// values, named by where they come from (never "given, or none" for values from a file).
+TEST(SuiteStatistics, ThePar2LineStatesTheSolvedRuleTheSuiteUses) {
+  Suite suite = toy_suite(10.0, {1, 2, 3});
+  std::string md = statistics_markdown(suite, toy_outcome(suite));
+  EXPECT_NE(md.find("when it is feasible and its solver stopped on its own"), std::string::npos) << md;
+  suite.references["p"] = 4;  // as a references file gives it
+  md = statistics_markdown(suite, toy_outcome(suite));
+  EXPECT_NE(md.find("its problem's reference value (the suite's references:), at its time to best"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("given, or none"), std::string::npos) << md;
+  EXPECT_EQ(md.find("stopped on its own"), std::string::npos) << md;
+}
+
 // Without a suite time limit the slowest run (12 s) is the limit: B = (4 + 24 + 12)/3 = 13.3333,
 // now with 2 solved.
 TEST(SuiteStatistics, WithoutATimeLimitTheSlowestRunSetsIt) {
