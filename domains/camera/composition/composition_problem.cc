@@ -14,6 +14,33 @@ namespace {
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 constexpr double kClearanceProbe = 10;  // metres: how far evaluate() looks for the nearest solid
 
+// The fewest samples k whose fraction k / 27, as the `visible` measure computes it, reaches
+// the property's lo when its range reaches 1 (then seeing k makes it score 1); 0 otherwise.
+int visible_at_once(const ShotPropertyKind& kind, const ShotProperty& property) {
+  const ValueRange& range = property.range;
+  if (kind.name != "visible" || range.hi < 1 || !(range.lo > 0) || range.lo > 1) return 0;
+  int k = 1;
+  while (static_cast<double>(k) / kPersonSamples < range.lo) ++k;
+  return k;
+}
+
+// A property's score at a view in `world`; a `visible` one with `at_once` > 0 stops casting
+// sight lines once that many samples are seen (the same score, fewer rays).
+double property_score(const ShotPropertyKind& kind, const ShotProperty& property, int at_once,
+                      const View& view, const ShotWorld& world, const int* targets) {
+  if (at_once > 0) {
+    const int target = targets[0];
+    int clear = 0;
+    for (const Eigen::Vector3d& q : person_samples(world.people()[static_cast<std::size_t>(target)].body)) {
+      if (world.clear(view.position(), q, target) && ++clear == at_once) return 1.0;
+    }
+    return satisfaction(static_cast<double>(clear) / kPersonSamples, property.range, property.softness,
+                        kind.circular);
+  }
+  return satisfaction(kind.measure(property, MeasureContext{view, world, targets}), property.range,
+                      property.softness, kind.circular);
+}
+
 }  // namespace
 
 CompositionProblem::CompositionProblem(const Scene& scene, const Shot& shot, double t,
@@ -218,12 +245,13 @@ ShotPropertyConstraint::ShotPropertyConstraint(const CompositionProblem& owner, 
       property_(&owner.shot().properties[index]),
       kind_(&kind),
       targets_(owner.targets()[index].data()),
-      kind_name_("shot." + kind.name) {}
+      kind_name_("shot." + kind.name) {
+  visible_at_once_ = visible_at_once(kind, *property_);
+}
+
 
 double ShotPropertyConstraint::score(const View& view) const {
-  const MeasureContext context{view, owner_->world(), targets_};
-  return satisfaction(kind_->measure(*property_, context), property_->range, property_->softness,
-                      kind_->circular);
+  return property_score(*kind_, *property_, visible_at_once_, view, owner_->world(), targets_);
 }
 
 double ShotPropertyConstraint::violation(std::span<const double> values) const {
@@ -240,7 +268,8 @@ ShotForesightConstraint::ShotForesightConstraint(const CompositionProblem& owner
       property_(&owner.shot().properties[index]),
       kind_(&kind),
       targets_(owner.targets()[index].data()),
-      horizon_(horizon) {}
+      horizon_(horizon),
+      visible_at_once_(visible_at_once(kind, *property_)) {}
 
 double ShotForesightConstraint::violation(std::span<const double> values) const {
   CameraPose pose = owner_->pose(values);
@@ -249,9 +278,7 @@ double ShotForesightConstraint::violation(std::span<const double> values) const 
   pose.look_at += shift;
   const std::optional<View> view = View::of(pose);
   if (!view) return 1.0;
-  const MeasureContext context{*view, owner_->future(horizon_), targets_};
-  return 1 - satisfaction(kind_->measure(*property_, context), property_->range,
-                          property_->softness, kind_->circular);
+  return 1 - property_score(*kind_, *property_, visible_at_once_, *view, owner_->future(horizon_), targets_);
 }
 
 ShotClearanceConstraint::ShotClearanceConstraint(const CompositionProblem& owner)

@@ -140,6 +140,7 @@ class ShotPropertyConstraint : public csp::Constraint {
   const ShotPropertyKind* kind_;
   const int* targets_;
   std::string kind_name_;
+  int visible_at_once_ = 0;  // a `visible` property's samples seen that make it score 1 (0: not one)
 };
 
 // A framed or visible property scored at a foresight horizon (see above): 1 - satisfaction
@@ -158,6 +159,7 @@ class ShotForesightConstraint : public csp::Constraint {
   const ShotPropertyKind* kind_;
   const int* targets_;
   std::size_t horizon_;
+  int visible_at_once_;  // as ShotPropertyConstraint's
 };
 
 // Hard: max(0, clearance - distance to the nearest solid or person's box).

@@ -60,6 +60,9 @@ TrackingCamera::TrackingCamera(const Scene& scene, TrackingOptions options)
     throw std::invalid_argument("solver '" + options_.solver + "' cannot film this shot: " + why);
   }
   local_ = registry.create("shot-search", {{"global", "false"}});
+  // The sweep's share of a frame is in people looked at: fewer candidates with more people.
+  sweep_count_ = static_cast<std::size_t>(std::max<std::int64_t>(
+      4, options_.sweep_people_per_frame / static_cast<std::int64_t>(problem_.wanted().size())));
   local_context_.limits.max_evaluations = options_.frame_evaluations;
   local_context_.want_breakdown = false;
   local_context_.anytime = false;
@@ -214,14 +217,14 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     // the background sweep is scored there too.
     problem_.set_time(t_, options_.lead_seconds);
     ahead_.set_time(t_, options_.lead_seconds);
-    sweep_slice(static_cast<std::size_t>(options_.sweep_per_frame));
+    sweep_slice(sweep_count_);
     local_->solve_into(problem_.problem(), aim_, local_context_, result_);
     aim_ = result_.best;
     problem_.evaluate_into(problem_.pose(aim_), aimed_);
     // When the aimed-for pose breaks a rule: a global solve. When it loses someone or falls
     // well below the last global pose: the last sweep's best if it does better with
-    // foresight; else, if that global pose kept everyone (or the fall), a global solve if
-    // one is due (they are rationed).
+    // foresight, else a global solve if one is due (they are rationed: one at hand at the
+    // start, then resolves_per_second).
     resolves_ = std::min(1.0, resolves_ + options_.resolves_per_second * dt);
     const bool loses = loses_someone(aimed_);
     const bool dropped = aimed_.satisfaction < aim_satisfaction_ - options_.resolve_drop;

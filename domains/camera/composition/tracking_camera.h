@@ -9,21 +9,23 @@
 // Each frame: the shot's problem is set to where the people will be `lead_seconds` on
 // (their positions and velocities now: a forecast, as a game would make); the pose the
 // camera aims for is refined from the last one (shot-search without its global phase, a
-// small budget). A **background sweep** scores `sweep_per_frame` candidate poses a frame
-// (round the people at the aim's distance and 0.7 and 1.4 times it, 16 bearings, 3
-// elevations, then Halton points of the region, each looking at the people) with
+// small budget). A **background sweep** scores a few candidate poses a frame (16 with two
+// people, 8 with four: `sweep_people_per_frame` over the people wanted; round the people at
+// the aim's distance and 0.7 and 1.4 times it, 16 bearings, 3 elevations, then Halton
+// points of the region, each looking at the people) with
 // **foresight**: the shot's framed and visible properties also scored 0.5 s and 1 s on, the
 // camera carried along with the people (CompositionProblem's Foresight), so a pose the
-// pillar or bus about to pass spoils ranks low; a full sweep takes 12 frames. When the
+// pillar or bus about to pass spoils ranks low; a sweep of 192 takes 12-24 frames. When the
 // aimed-for pose breaks a rule, a global solve (the configured solver, with foresight)
 // replaces it. When it loses someone (a framed or visible property below its range) or its
-// satisfaction falls `resolve_drop` below the last global pose's, the last sweep's best
-// replaces it if it does better with foresight; else a global solve does when that global
-// pose kept everyone (or on the fall), at most `resolves_per_second` of them: a global
-// solve costs a few frames' time, the sweep's slices cost the same every frame. The camera follows the aimed-for pose
-// through two first-order stages (the aimed-for pose low-passed, then a spring toward
-// that; time constant `smoothing` each), bounded by max_speed; the look direction, fov and
-// roll alike. When the camera's own pose breaks the shot while the aimed-for pose keeps it
+// satisfaction falls `resolve_drop` below the last global or sweep pose's, the last sweep's
+// best replaces it if it does better with foresight; else a global solve does, when that
+// global pose kept everyone (or on the fall), at most one at hand at the start and then
+// `resolves_per_second`. So the global search costs the same every frame, and few frames
+// pay for a whole global solve. The
+// camera follows the aimed-for pose through two first-order stages (the aimed-for pose
+// low-passed, then a spring toward that; time constant `smoothing` each), bounded by
+// max_speed; the look direction, fov and roll alike. When the camera's own pose breaks the shot while the aimed-for pose keeps it
 // and is out of one frame's smooth reach, it cuts there, never twice within
 // `min_shot_seconds`. Once warm, a frame allocates nothing.
 #pragma once
@@ -41,10 +43,12 @@ struct TrackingOptions {
   std::string solver = "shot-search";   // the global solve (any composition solver)
   // Budgets in evaluations of the shot, not seconds, so a run is the same on any machine
   // under any load (about 2 us each with four people among boxes).
-  std::uint64_t frame_evaluations = 80;     // the per-frame local refinement
-  std::uint64_t resolve_evaluations = 250;  // a global solve
-  std::int64_t sweep_per_frame = 16;        // sweep candidates scored each frame
-  double resolves_per_second = 0.3;         // global re-solves for a lost person, at most
+  std::uint64_t frame_evaluations = 60;     // the per-frame local refinement
+  std::uint64_t resolve_evaluations = 250;  // a global solve (a broken rule)
+  // Sweep candidates scored each frame: this over the number of people the shot wants (32:
+  // 16 candidates with two people, 8 with four), at least 4.
+  std::int64_t sweep_people_per_frame = 32;
+  double resolves_per_second = 0.1;         // global solves for a lost person, at most
   double resolve_drop = 0.1;             // satisfaction lost before a global solve
   double max_speed = 8.0;                // m/s: longer moves are cuts
   double smoothing = 0.15;               // s: each of the two stages' time constant
@@ -94,15 +98,15 @@ class TrackingCamera : public CameraController {
   solvers::SolverResult result_;
   csp::Assignment aim_;          // the pose aimed for, as the problem's assignment
   double aim_satisfaction_ = 0;  // of the last global solve
-  bool global_loses_ = false;    // the last global solve's pose loses someone too
   CameraPose pose_;              // where the camera is
   CameraPose filtered_;          // the aimed-for pose low-passed (look_at: a unit direction)
   ShotEvaluation evaluation_;        // verdict_'s, of pose_
   ShotEvaluation aimed_, here_;      // problem_'s, of the aimed-for pose and of pose_
   CameraFrame frame_;
   double t_ = 0, last_cut_t_ = -1e9;
-  double resolves_ = 1;  // global re-solves due (rationed: resolves_per_second)
-  std::size_t sweep_cursor_ = 0;
+  double resolves_ = 1;          // global solves due for a lost person (rationed)
+  bool global_loses_ = false;    // the last global solve's pose loses someone too
+  std::size_t sweep_cursor_ = 0, sweep_count_ = 16;
   bool has_best_ = false, ready_ = false;  // this sweep has a best; the last one's is ready
   csp::Score best_score_;
   // Bests as offsets from the people's centre, so they move along with the people.
