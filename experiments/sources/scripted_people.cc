@@ -42,6 +42,23 @@ std::vector<std::pair<double, double>> path_points(const Person& p) {
   return out;
 }
 
+std::vector<std::pair<double, double>> path_points(const std::vector<Person>& people) {
+  std::vector<std::pair<double, double>> out;
+  for (const Person& p : people) {
+    for (const auto& q : path_points(p)) out.push_back(q);
+  }
+  return out;
+}
+
+bool clear_of(const std::vector<std::pair<double, double>>& points, double x0, double z0, double x1,
+              double z1, double keep_off) {
+  return std::all_of(points.begin(), points.end(), [&](const auto& q) {
+    const double dx = std::max({0.0, std::min(x0, x1) - q.first, q.first - std::max(x0, x1)});
+    const double dz = std::max({0.0, std::min(z0, z1) - q.second, q.second - std::max(z0, z1)});
+    return std::hypot(dx, dz) > keep_off;
+  });
+}
+
 std::string actors_yaml(const std::vector<Person>& people) {
   std::ostringstream out;
   out << "actors:\n";
@@ -63,20 +80,13 @@ std::string box_yaml(const std::string& name, double x0, double y0, double z0, d
 
 std::string pillars_yaml(Draw& draw, const std::vector<Person>& people, int count, double spread,
                          double keep_off) {
-  std::vector<std::pair<double, double>> paths;
-  for (const Person& p : people) {
-    for (const auto& q : path_points(p)) paths.push_back(q);
-  }
+  const std::vector<std::pair<double, double>> paths = path_points(people);
   std::string out;
   for (int i = 0, tries = 0; i < count && tries < 200 && !paths.empty(); ++tries) {
     const auto& near = paths[static_cast<std::size_t>(draw.integer(0, static_cast<int>(paths.size()) - 1))];
     const double px = near.first + draw.uniform(-spread, spread), pz = near.second + draw.uniform(-spread, spread);
     const double w = draw.uniform(0.3, 0.8) / 2, h = draw.uniform(2.5, 4);
-    const bool clear = std::all_of(paths.begin(), paths.end(), [&](const auto& q) {
-      const double dx = std::max(0.0, std::abs(q.first - px) - w), dz = std::max(0.0, std::abs(q.second - pz) - w);
-      return std::hypot(dx, dz) > keep_off;
-    });
-    if (!clear) continue;
+    if (!clear_of(paths, px - w, pz - w, px + w, pz + w, keep_off)) continue;
     out += box_yaml("pillar", px - w, 0, pz - w, px + w, h, pz + w);
     ++i;
   }

@@ -35,8 +35,13 @@ struct Person {
 std::string num(double v);
 // The yaw (degrees, 0 along +z, 90 along +x) facing from (x0, z0) toward (x1, z1).
 double yaw_toward(double x0, double z0, double x1, double z1);
-// Points along a person's path every half metre (and at each key).
+// Points along a person's path every half metre (and at each key); along everyone's.
 std::vector<std::pair<double, double>> path_points(const Person& person);
+std::vector<std::pair<double, double>> path_points(const std::vector<Person>& people);
+// Every point more than `keep_off` metres from the rectangle [x0, x1] x [z0, z1] (corners
+// in any order).
+bool clear_of(const std::vector<std::pair<double, double>>& points, double x0, double z0, double x1,
+              double z1, double keep_off);
 // The `actors:` block of a scene file.
 std::string actors_yaml(const std::vector<Person>& people);
 // One `boxes:` entry.

@@ -27,24 +27,6 @@ struct Turn {
   }
 };
 
-// Every point of `people`'s paths at least `keep_off` metres from the box [x0, x1] x [z0, z1].
-bool clear_of(const std::vector<std::pair<double, double>>& paths, double x0, double z0, double x1,
-              double z1, double keep_off) {
-  return std::all_of(paths.begin(), paths.end(), [&](const auto& q) {
-    const double dx = std::max({0.0, std::min(x0, x1) - q.first, q.first - std::max(x0, x1)});
-    const double dz = std::max({0.0, std::min(z0, z1) - q.second, q.second - std::max(z0, z1)});
-    return std::hypot(dx, dz) > keep_off;
-  });
-}
-
-std::vector<std::pair<double, double>> all_points(const std::vector<Person>& people) {
-  std::vector<std::pair<double, double>> out;
-  for (const Person& p : people) {
-    for (const auto& q : path_points(p)) out.push_back(q);
-  }
-  return out;
-}
-
 struct Layout {
   std::string description;
   std::vector<Person> people;
@@ -154,7 +136,7 @@ Layout crossing(Draw& draw, const Turn& turn, double T) {
     const double u0 = R * std::cos(a), w0 = R * std::sin(a), u1 = R * std::cos(b), w1 = R * std::sin(b);
     out.people.push_back({names[i], {turn.key(0, u0, w0, u1 - u0, w1 - w0), turn.key(T, u1, w1, u1 - u0, w1 - w0)}});
   }
-  const auto paths = all_points(out.people);
+  const auto paths = path_points(out.people);
   // A fountain, one or two kiosks and up to three lamps, each where it touches no path.
   struct Thing {
     const char* name;
