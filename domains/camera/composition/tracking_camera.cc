@@ -37,8 +37,8 @@ Shot working_shot(const Shot& shot, const std::vector<std::string>& wanted) {
   return out;
 }
 
-std::vector<std::string> wanted_names(const Scene& scene) {
-  const CompositionProblem problem(scene, shot_of(scene), scene.trajectory().start_time());
+// The names of the people `problem` wants in the image.
+std::vector<std::string> wanted_names(const CompositionProblem& problem) {
   std::vector<std::string> out;
   for (int w : problem.wanted()) out.push_back(problem.world().people()[static_cast<std::size_t>(w)].name);
   return out;
@@ -49,10 +49,10 @@ std::vector<std::string> wanted_names(const Scene& scene) {
 TrackingCamera::TrackingCamera(const Scene& scene, TrackingOptions options)
     : scene_(&scene),
       options_(std::move(options)),
-      shot_(working_shot(shot_of(scene), wanted_names(scene))),
+      verdict_(scene, shot_of(scene), scene.trajectory().start_time()),
+      shot_(working_shot(shot_of(scene), wanted_names(verdict_))),
       problem_(scene, shot_, scene.trajectory().start_time()),
-      ahead_(scene, shot_, scene.trajectory().start_time(), options_.foresight),
-      verdict_(scene, shot_of(scene), scene.trajectory().start_time()) {
+      ahead_(scene, shot_, scene.trajectory().start_time(), options_.foresight) {
   solvers::SolverRegistry& registry = solvers::SolverRegistry::global();
   register_composition_solvers(registry);
   global_ = registry.create(options_.solver);

@@ -89,10 +89,10 @@ class TrackingCamera : public CameraController {
 
   const Scene* scene_;
   TrackingOptions options_;
+  CompositionProblem verdict_;   // the scene's own shot: FORMATS.md's verdict
   Shot shot_;                    // the shot worked to (see working_shot in the .cc)
   CompositionProblem problem_;   // shot_ now: the per-frame refinement
-  CompositionProblem ahead_;     // shot_ with foresight: the global solves
-  CompositionProblem verdict_;   // the scene's own shot: FORMATS.md's verdict
+  CompositionProblem ahead_;     // shot_ with foresight: the sweep and the global solves
   std::unique_ptr<solvers::Solver> local_, global_;
   solvers::SolveContext local_context_, global_context_;
   solvers::SolverResult result_;
