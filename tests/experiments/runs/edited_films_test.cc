@@ -11,12 +11,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/composition/composition_problem.h"
 #include "sightline/domains/camera/editing/editor.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/edit_metrics.h"
 #include "sightline/experiments/runs/edit_run.h"
 #include "sightline/experiments/sources/conversation_generator.h"
+#include "tests/shipped_files.h"
 
 namespace sightline::experiments {
 namespace {
@@ -32,8 +34,7 @@ TraceRow row_at(double t, Eigen::Vector3d camera, Eigen::Vector3d target, bool c
 }
 
 TEST(EditMetrics, JudgesAFilmMadeByHand) {
-  const std::string path = (std::filesystem::temp_directory_path() / "judge_two.yaml").string();
-  std::ofstream(path) << R"(name: judge
+  const camera::Scene scene = camera::parse_scene(csp::parse_yaml(R"(name: judge
 actors:
   - name: ann
     trajectory:
@@ -45,8 +46,7 @@ actors:
       - {t: 3, position: [1, 0, 0], yaw: 270}
 script:
   - {t: [0, 3], speaker: ann, to: bob}
-)";
-  const camera::Scene scene = camera::read_scene_file(path);
+)", "judge_two.yaml"));
   const Eigen::Vector3d ann(-1, 1.5, 0);
   const Eigen::Vector3d a(1.5, 1.6, 2.5), b(1.5, 1.6, -2.5);  // either side of the line
   const double r = 115 * M_PI / 180, d = std::hypot(2.5, 2.5);
@@ -80,18 +80,8 @@ script:
   EXPECT_DOUBLE_EQ(edit_metrics(scene, trace, 1.0).speaker_shown_percent, 0);
 }
 
-std::vector<std::string> conversations() {
-  std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SIGHTLINE_SOURCE_DIR) +
-                                                           "/experiments/scenes/conversations")) {
-    if (e.path().extension() == ".yaml") out.push_back(e.path().string());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 TEST(EditedFilms, EveryShippedConversationKeepsTheRulesOfContinuityEditing) {
-  const std::vector<std::string> scenes = conversations();
+  const std::vector<std::string> scenes = shipped_yaml_files("experiments/scenes/conversations");
   ASSERT_GE(scenes.size(), 5u);
   for (const std::string& path : scenes) {
     const camera::Scene scene = camera::read_scene_file(path);

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <random>
 #include <string>
 
@@ -18,22 +17,13 @@
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/shot_metrics.h"
 #include "sightline/experiments/sources/tracking_shot_generator.h"
+#include "tests/shipped_files.h"
 
 namespace sightline::experiments {
 namespace {
 
-std::vector<std::string> shot_scenes() {
-  std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SIGHTLINE_SOURCE_DIR) +
-                                                           "/experiments/scenes/shots")) {
-    if (e.path().extension() == ".yaml") out.push_back(e.path().string());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 TEST(TrackingShots, EveryShippedShotSceneIsFilmedSmoothlyWithinTheShotsRules) {
-  const std::vector<std::string> scenes = shot_scenes();
+  const std::vector<std::string> scenes = shipped_yaml_files("experiments/scenes/shots");
   ASSERT_GE(scenes.size(), 5u);
   for (const std::string& path : scenes) {
     const camera::Scene scene = camera::read_scene_file(path);

@@ -5,9 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-
+#include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/editing/editor.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/solvers/registry.h"
@@ -15,10 +13,8 @@
 namespace sightline::camera {
 namespace {
 
-std::string write_scene(const std::string& name, const std::string& text) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
-  std::ofstream(path) << text;
-  return path;
+Scene scene_of(const std::string& name, const char* text) {
+  return parse_scene(csp::parse_yaml(text, name));
 }
 
 // ann and bob face each other on the x axis; ann speaks to bob for 10 s.
@@ -82,7 +78,7 @@ Footage hand_footage(std::size_t slots) {
 }
 
 TEST(EditCosts, CutsAcrossTheLineJumpCutsAndCleanCutsCostWhatTheRulesSay) {
-  const Scene scene = read_scene_file(write_scene("edit_costs_two.yaml", kTwoPeople));
+  const Scene scene = scene_of("edit_costs_two.yaml", kTwoPeople);
   const Footage f = hand_footage(9);
   EditWeights w;
   w.min_shot_seconds = 1;
@@ -105,7 +101,7 @@ TEST(EditCosts, CutsAcrossTheLineJumpCutsAndCleanCutsCostWhatTheRulesSay) {
 }
 
 TEST(EditCosts, AShotShorterThanTheMinimumCostsItsShortfall) {
-  const Scene scene = read_scene_file(write_scene("edit_costs_short.yaml", kTwoPeople));
+  const Scene scene = scene_of("edit_costs_short.yaml", kTwoPeople);
   const Footage f = hand_footage(9);
   EditWeights w;
   w.min_shot_seconds = 1;  // 4 slots
@@ -144,7 +140,7 @@ script:
 )";
 
 TEST(EditModel, TheChainOptimumEqualsBnbAndBruteForceOnSmallEdits) {
-  const Scene scene = read_scene_file(write_scene("edit_short.yaml", kShort));
+  const Scene scene = scene_of("edit_short.yaml", kShort);
   std::vector<CandidateShot> all = candidate_shots(scene);
   for (const std::size_t count : {3u, 5u}) {
     for (const double min_shot : {0.0, 2.0}) {
