@@ -20,7 +20,7 @@ struct ViewOptions {
   std::vector<std::string> traces;
   std::string out;
   std::string assets = "inline";
-  double max_speed = 8.0;
+  double max_speed = experiments::TraceViewOptions{}.max_speed;
 };
 
 void run_view(const ViewOptions& o) {
@@ -76,7 +76,8 @@ void add_view_command(CLI::App& app) {
       ->check(CLI::IsMember({"inline", "beside"}));
   cmd->add_option("--max-speed", options->max_speed,
                   "m/s: a faster move without a cut flag counts as an unflagged jump "
-                  "(default 8, the chase camera's smooth-motion bound)")
+                  "(default: the chase camera's smooth-motion bound)")
+      ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->callback([options] { run_view(*options); });
 }

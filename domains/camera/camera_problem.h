@@ -74,6 +74,8 @@ class CameraProblem {
   const MotionPrediction& prediction() const { return *prediction_; }
   const CameraProfile& profile() const { return *profile_; }
   const FrameParameters& frame() const { return frame_; }
+  // The character's state at the last set_frame().
+  const CharacterState& character() const { return character_; }
   const ConstraintIds& ids() const { return ids_; }
   static constexpr csp::VariableId kCamX = 0, kCamY = 1, kCamZ = 2;
 

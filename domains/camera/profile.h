@@ -120,11 +120,12 @@ struct CutPolicy {
   // predicted points, instead of after a series of escapes (velocity jumps) that each buy a
   // frame (chase_camera.h). Off in the thesis profiles.
   bool cut_ahead = false;
-  // How many stuck cuts (above) any 60 s may hold; 0: no limit (the thesis profiles). A
-  // camera left behind that keeps cutting is a camera that failed to anticipate: past the
-  // limit it follows smoothly, still seeing the character, and does not cut for being late.
-  // The anticipating presets set 2 (issue 24: at most 2 cuts a minute beyond the thesis'
-  // rules). In [0, 16].
+  // A stuck cut (above) is taken only while the last 60 s hold fewer cuts than this, cuts
+  // of any reason counted (a forced cut too); 0: no limit (the thesis profiles). A camera
+  // left behind that keeps cutting is a camera that failed to anticipate: past the limit it
+  // follows smoothly, still seeing the character, and does not cut for being late. The
+  // anticipating presets set 2 (issue 24: at most 2 cuts a minute beyond the thesis'
+  // rules, whatever their reason). In [0, 16].
   int stuck_per_minute = 0;
 
   bool operator==(const CutPolicy&) const = default;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "sightline/domains/camera/control/chase_camera.h"
 #include "sightline/domains/camera/scene.h"
 #include "sightline/experiments/runs/metrics.h"
 #include "sightline/experiments/replay/replay.h"
@@ -55,7 +56,7 @@ struct TraceViewOptions {
   std::vector<std::string> trace_paths;  // at least one
   // A move faster than this (m/s, over the frame's time step) without a cut flag is an
   // unflagged jump; the default is the chase camera's smooth-motion bound.
-  double max_speed = 8.0;
+  double max_speed = camera::ChaseCameraOptions{}.max_speed;
   ReplayOptions replay;
 };
 

@@ -69,12 +69,13 @@ void require_unique(std::set<std::string>& seen, const std::string& label, const
 }
 
 void read_controller(const Spec& spec, camera::ChaseCameraOptions& o) {
-  spec.check_keys({"visibility_guard", "max_speed", "max_acceleration", "response_time",
-                   "target_smoothing", "target_smoothing_stages", "min_shot_seconds",
-                   "stuck_seconds", "backing_speed"});
+  spec.check_keys({"visibility_guard", "max_speed", "max_acceleration", "escape_speed",
+                   "response_time", "target_smoothing", "target_smoothing_stages",
+                   "min_shot_seconds", "stuck_seconds", "backing_speed"});
   o.visibility_guard = spec.bool_or("visibility_guard", o.visibility_guard);
   o.max_speed = spec.number_or("max_speed", o.max_speed);
   o.max_acceleration = spec.number_or("max_acceleration", o.max_acceleration);
+  o.escape_speed = spec.number_or("escape_speed", o.escape_speed);
   o.response_time = spec.number_or("response_time", o.response_time);
   o.target_smoothing = spec.number_or("target_smoothing", o.target_smoothing);
   if (const Spec* stages = spec.find("target_smoothing_stages")) {
@@ -103,6 +104,9 @@ std::string controller_text(const camera::ChaseCameraOptions& o) {
   // Fields added later appear only when they differ from their default, so the run ids of
   // existing suites (which hash this text) stay the same.
   if (o.target_smoothing_stages != 1) out << ",stages=" << o.target_smoothing_stages;
+  if (o.escape_speed != camera::ChaseCameraOptions{}.escape_speed) {
+    out << ",escape=" << o.escape_speed;
+  }
   return out.str();
 }
 

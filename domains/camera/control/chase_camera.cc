@@ -14,6 +14,7 @@ std::string ChaseCameraOptions::validate() const {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(max_speed)) return "max_speed must be > 0 (m/s)";
   if (!positive(max_acceleration)) return "max_acceleration must be > 0 (m/s^2)";
+  if (!positive(escape_speed)) return "escape_speed must be > 0 (m/s)";
   if (!positive(response_time)) return "response_time must be > 0 (s)";
   if (!(target_smoothing >= 0) || !std::isfinite(target_smoothing)) {
     return "target_smoothing must be >= 0 (s)";
@@ -72,7 +73,7 @@ void ChaseCamera::reset(const Eigen::Vector3d& position) {
   set_filtered_target(position);
   since_cut_ = 1e9;
   stuck_for_ = 0;
-  stuck_cuts_ = 0;
+  cuts_made_ = 0;
   frame_.position = position;
 }
 
@@ -140,6 +141,7 @@ void ChaseCamera::cut_to(const Eigen::Vector3d& p, CutReason reason) {
   stuck_for_ = 0;
   frame_.cut = true;
   frame_.cut_reason = reason;
+  note_cut(now_);
 }
 
 bool ChaseCamera::backed_up(const CharacterState& character, const Eigen::Vector3d& look) const {
@@ -189,9 +191,11 @@ std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d&
   // must beat it. The constraints without sight lines are summed first, so most moves are
   // dropped before any query. After an escape the low-passed target is kept: the spring
   // goes on toward the solver's target (restarting it from the camera's position raised
-  // jerk p99 on most thesis scenes: grand-tour 2,721 m/s^3 against 581).
+  // jerk p99 on most thesis scenes: grand-tour 2,721 m/s^3 against 581). The moves reach
+  // escape_speed x dt; only when none of them is usable (nor staying), max_speed x dt.
   constexpr double kVelocityChangeCost = 0.1;
-  const double reach = max_step(dt) * (1 + 1e-9);
+  double escape_step = std::min(options_.max_speed, options_.escape_speed) * dt;
+  double reach = escape_step * (1 + 1e-9);
   const csp::Problem& problem = problem_.problem();
   auto soft_cost = [&](const std::vector<csp::ConstraintId>& ids, const double* values) {
     double sum = 0;
@@ -217,15 +221,27 @@ std::optional<Eigen::Vector3d> ChaseCamera::smooth_escape(const Eigen::Vector3d&
     }
   };
   consider(position_, true);
-  for (const Eigen::Vector3d& centre : {step, position_}) {
-    for (double length : {0.125, 0.25, 0.5, 1.0}) {
-      for (const Eigen::Vector3d& d : directions) {
-        consider(centre + length * max_step(dt) * d, false);
+  auto around = [&] {
+    for (const Eigen::Vector3d& centre : {step, position_}) {
+      for (double length : {0.125, 0.25, 0.5, 1.0}) {
+        for (const Eigen::Vector3d& d : directions) {
+          consider(centre + length * escape_step * d, false);
+        }
       }
     }
-  }
+  };
+  around();
   for (double fraction : {0.75, 0.5, 0.25}) {
     consider(position_ + fraction * (step - position_), false);
+  }
+  if (!std::isfinite(best_cost) && escape_step < max_step(dt)) {
+    // Nothing usable within escape_speed, staying included: the same moves up to max_speed
+    // rather than a forced cut (escapes this long everywhere made jerk p99 on the level
+    // walks and families worse than the thesis camera's on 7 walks instead of 4; none at
+    // all cut 7 more times on the level walks).
+    escape_step = max_step(dt);
+    reach = escape_step * (1 + 1e-9);
+    around();
   }
   return best;
 }
@@ -277,6 +293,7 @@ const CameraFrame& ChaseCamera::update(const CharacterState& character, double d
   frame_.cut = false;
   frame_.cut_reason = CutReason::kNone;
   since_cut_ += dt;
+  now_ = character.t;
 
   const AreaTransition transition = problem_.set_frame(character, position_, dt);
   const Eigen::Vector3d look = scene_->character().look_at(character.position);
@@ -464,24 +481,23 @@ void ChaseCamera::check_left_behind(const FrameContext& frame, Eigen::Vector3d& 
     if (usable(shot, frame.look) && (shot - position_).norm() > max_step(frame.dt)) {
       target = shot;
       cut_to(shot, CutReason::kStuck);
-      note_stuck_cut(frame.character.t);
     }
   }
 }
 
-// cuts.stuck_per_minute: fewer stuck cuts than the limit in the last 60 s.
+// cuts.stuck_per_minute: fewer cuts (of any reason) than the limit in the last 60 s.
 bool ChaseCamera::stuck_cut_allowed(double t) const {
   const int limit = problem_.profile().cuts.stuck_per_minute;
   if (limit <= 0) return true;
-  const std::size_t kept = std::min<std::size_t>(stuck_cuts_, stuck_cut_times_.size());
+  const std::size_t kept = std::min<std::size_t>(cuts_made_, cut_times_.size());
   int recent = 0;
-  for (std::size_t i = 0; i < kept; ++i) recent += t - stuck_cut_times_[i] < 60.0 ? 1 : 0;
+  for (std::size_t i = 0; i < kept; ++i) recent += t - cut_times_[i] < 60.0 ? 1 : 0;
   return recent < limit;
 }
 
-void ChaseCamera::note_stuck_cut(double t) {
-  stuck_cut_times_[stuck_cuts_ % stuck_cut_times_.size()] = t;
-  ++stuck_cuts_;
+void ChaseCamera::note_cut(double t) {
+  cut_times_[cuts_made_ % cut_times_.size()] = t;
+  ++cuts_made_;
 }
 
 // Blocked but still seeing the character: stay, and cut to the target when stuck for
@@ -494,7 +510,6 @@ void ChaseCamera::stay(const FrameContext& frame, const Eigen::Vector3d& target)
       stuck_cut_allowed(frame.character.t) && usable(target, frame.look) &&
       (target - position_).norm() > max_step(frame.dt)) {
     cut_to(target, CutReason::kStuck);
-    note_stuck_cut(frame.character.t);
   }
 }
 

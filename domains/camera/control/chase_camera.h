@@ -70,8 +70,14 @@ struct ChaseCameraOptions {
   std::string solver = "occlusion-octree";  // any registered solver or pipeline
   solvers::OptionValues solver_options;
   std::uint64_t seed = 1;
-  double max_speed = 8.0;          // m/s: the smooth-motion bound; longer moves are cuts
+  // m/s: the smooth-motion bound; longer moves are cuts. Above what characters run at
+  // (6-8 m/s), so a camera left behind a runner at a corner can catch up (at 8 m/s the
+  // anticipating camera cut 3-10 times on each of three 12-18 s runs).
+  double max_speed = 12.0;
   double max_acceleration = 15.0;  // m/s^2
+  // m/s: the longest one-frame escape move tried first (see smooth_escape); escapes are
+  // velocity jumps, and at max_speed they were the top of the jerk.
+  double escape_speed = 8.0;
   double response_time = 0.3;      // s: the spring toward the target settles in ~2x this
   double target_smoothing = 0.15;  // s: time constant of the low-pass on the solver's target
   // First-order low-pass stages in cascade, each of time constant target_smoothing (1 to
@@ -188,11 +194,13 @@ class ChaseCamera : public CameraController {
   std::array<Eigen::Vector3d, ChaseCameraOptions::kMaxSmoothingStages> filtered_target_{};
   void set_filtered_target(const Eigen::Vector3d& p) { filtered_target_.fill(p); }
   double since_cut_ = 1e9;  // seconds since the last cut
-  // The times of the last stuck cuts (a ring), for the profile's cuts.stuck_per_minute.
-  std::array<double, 16> stuck_cut_times_{};
-  std::size_t stuck_cuts_ = 0;  // how many were made (the ring holds the last 16)
+  // The times of the last cuts, of any reason (a ring), for the profile's
+  // cuts.stuck_per_minute.
+  std::array<double, 16> cut_times_{};
+  std::size_t cuts_made_ = 0;  // how many were made (the ring holds the last 16)
+  double now_ = 0;             // the frame's time (the character's t)
   bool stuck_cut_allowed(double t) const;
-  void note_stuck_cut(double t);
+  void note_cut(double t);
   double stuck_for_ = 0;    // seconds the smooth move has been blocked
   // With the planner: the camera's distance from the ideal position last frame.
   double last_off_ideal_ = 1e9;

@@ -88,20 +88,47 @@ HorizonPlanner::HorizonPlanner(const CameraProblem& problem,
       plan_seconds_(plan_seconds),
       max_jerk_(max_jerk) {}
 
+void HorizonPlanner::record_trail(const Eigen::Vector3d& look) {
+  if (trail_size_ == 0 || (look - trail_point(1)).norm() >= kTrailSpacing) {
+    trail_[static_cast<std::size_t>(trail_next_)] = look;
+    trail_next_ = (trail_next_ + 1) % kTrailPoints;
+    trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
+  }
+}
+
+std::optional<Eigen::Vector3d> HorizonPlanner::chase_on_trail(
+    const Eigen::Vector3d& look, const Eigen::Vector3d& ideal,
+    Eigen::Vector3d& chase_velocity) const {
+  const double distance = problem_->effective().desired_distance;
+  Eigen::Vector3d newer = look;
+  double walked = 0;
+  for (int k = 1; k <= trail_size_; ++k) {
+    const Eigen::Vector3d& older = trail_point(k);
+    const double leg = (newer - older).norm();
+    if (walked + leg >= distance && leg > 1e-9) {
+      const Eigen::Vector3d along = (newer - older) / leg;
+      const Eigen::Vector3d p = newer - (distance - walked) * along;
+      const SceneAtTime& geometry_now = problem_->scene_at_time();
+      const double radius = problem_->profile().clearance_radius;
+      Eigen::Vector3d raised = p;
+      raised.y() += ideal.y() - look.y();
+      const bool high = has_room(geometry_now, raised, radius) &&
+                        geometry_now.line_of_sight(raised, p);
+      Eigen::Vector3d speed = problem_->character().velocity;
+      speed.y() = 0;
+      chase_velocity = along * speed.norm();
+      return high ? raised : p;
+    }
+    walked += leg;
+    newer = older;
+  }
+  return std::nullopt;
+}
+
 std::optional<Eigen::Vector3d> HorizonPlanner::follow_trail(const State& now,
                                                             const Eigen::Vector3d& look,
                                                             const Eigen::Vector3d& target_velocity,
                                                             Eigen::Vector3d& trail_velocity) {
-  // The trail: the character's look-at point every kTrailSpacing metres.
-  {
-    const int newest = (trail_next_ + kTrailPoints - 1) % kTrailPoints;
-    if (trail_size_ == 0 ||
-        (look - trail_[static_cast<std::size_t>(newest)]).norm() >= kTrailSpacing) {
-      trail_[static_cast<std::size_t>(trail_next_)] = look;
-      trail_next_ = (trail_next_ + 1) % kTrailPoints;
-      trail_size_ = std::min(trail_size_ + 1, kTrailPoints);
-    }
-  }
   const SceneAtTime& geometry_now = problem_->scene_at_time();
   // Only when the straight way to the ideal position (the profile's shot, where the
   // camera should end up; the solver's target is searched near the camera and may be on
@@ -162,14 +189,21 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   const Eigen::Vector3d side(toward.z(), 0, -toward.x());
 
   // The trail's waypoint, when the camera is left behind (follow_trail).
+  record_trail(look);
   Eigen::Vector3d trail_velocity = Eigen::Vector3d::Zero();
   const std::optional<Eigen::Vector3d> waypoint =
       follow_trail(now, look, target_velocity, trail_velocity);
   const Eigen::Vector3d ideal = problem_->ideal_position();
+  Eigen::Vector3d chase_velocity = Eigen::Vector3d::Zero();
+  // The chase on her trail, while she runs (see the header comment).
+  const std::optional<Eigen::Vector3d> chase =
+      problem_->character().velocity.norm() > kRunningSpeed
+          ? chase_on_trail(look, ideal, chase_velocity)
+          : std::nullopt;
 
   // Offsets from the target (index kStop: the smooth stop, goal computed below; kTrail:
   // the trail's waypoint).
-  constexpr int kStop = kCandidates - 1, kTrail = kCandidates - 2;
+  constexpr int kStop = kCandidates - 1, kTrail = kCandidates - 2, kChase = kCandidates - 3;
   std::array<Eigen::Vector3d, kCandidates> offsets = {
       Eigen::Vector3d::Zero(),
       previous_offset_,
@@ -181,6 +215,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       -1.5 * side,
       up + 1.5 * side,
       up - 1.5 * side,
+      chase ? Eigen::Vector3d(*chase - target) : Eigen::Vector3d::Zero(),
       waypoint ? Eigen::Vector3d(*waypoint - target) : Eigen::Vector3d::Zero(),
       Eigen::Vector3d::Zero()};
 
@@ -189,10 +224,12 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   auto goal_of = [&](int i, double ahead) -> Eigen::Vector3d {
     if (i == kStop) return now.position + 0.5 * plan_seconds_ * now.velocity;
     if (i == kTrail) return *waypoint + ahead * trail_velocity;  // on along her path
+    if (i == kChase) return *chase + ahead * chase_velocity;
     return target + offsets[static_cast<std::size_t>(i)] + ahead * target_velocity;
   };
   auto velocity_of = [&](int i) -> Eigen::Vector3d {
     if (i == kTrail) return trail_velocity;
+    if (i == kChase) return chase_velocity;
     return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
   };
   const csp::Problem& problem = problem_->problem();
@@ -212,7 +249,8 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     order[static_cast<std::size_t>(i)] = i;
     const auto u = static_cast<std::size_t>(i);
     // A duplicate of the target (previous choice was the target itself) is skipped.
-    if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kTrail && !waypoint)) {
+    if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kTrail && !waypoint) ||
+        (i == kChase && !chase)) {
       cheap[u] = std::numeric_limits<double>::infinity();
       continue;
     }

@@ -27,6 +27,16 @@
 //          doorway or the gap between columns she took, where every straight goal runs
 //          into the wall beside it (a camera left behind a row of columns or a doorway's
 //          wall otherwise waits there until a stuck cut).
+//          And, while she runs (faster than kRunningSpeed), the chase on her trail: the
+//          point of her trail the desired distance behind her measured along it (at the
+//          shot's height where there is room), moving on along it at her speed. On a
+//          straight run it is the ideal shot, moving as fast as she does (the solver's
+//          target, searched near the camera and low-passed, lags a runner); round a corner
+//          it is where a camera that went her way would be, which sees round the corner
+//          she just took (a runner at 6-8 m/s turns a corner faster than the target swings
+//          round behind her: without it the camera lost her at most corners of the running
+//          family and cut there, 3-10 times in 12-18 s). Offered at walking pace too, it
+//          led the camera off into corners of rooms it then had to cut its way out of.
 //   T = max(plan_seconds, the time a minimum-jerk move of that length needs to stay under
 //          max_speed and max_acceleration): a physical bound, not a scene constant.
 // Each is priced:
@@ -73,11 +83,13 @@ namespace sightline::camera {
 
 class HorizonPlanner {
  public:
-  static constexpr int kCandidates = 12;
+  static constexpr int kCandidates = 13;
   // The character's trail: one look-at point every kTrailSpacing metres, the newest
   // kTrailPoints (12 m: a room or two back).
   static constexpr int kTrailPoints = 24;
   static constexpr double kTrailSpacing = 0.5;
+  // m/s: above this she runs, and the chase on her trail is a candidate.
+  static constexpr double kRunningSpeed = 4.0;
   // Cost per m/s^3 of jerk over the first frame: 300 m/s^3 (about the reactive camera's
   // p99) costs what 0.3 m off the desired distance costs.
   static constexpr double kJerkPrice = 1e-3;
@@ -123,6 +135,17 @@ class HorizonPlanner {
   std::optional<Eigen::Vector3d> follow_trail(const State& now, const Eigen::Vector3d& look,
                                               const Eigen::Vector3d& target_velocity,
                                               Eigen::Vector3d& trail_velocity);
+  // Records her look-at point on the trail (one every kTrailSpacing metres).
+  void record_trail(const Eigen::Vector3d& look);
+  // The shot on her trail the desired distance behind her, measured along the trail (at
+  // the shot's height where there is room, else at her look-at height), and
+  // `chase_velocity`, on along her path at her speed; nullopt while the trail is shorter.
+  std::optional<Eigen::Vector3d> chase_on_trail(const Eigen::Vector3d& look,
+                                                const Eigen::Vector3d& ideal,
+                                                Eigen::Vector3d& chase_velocity) const;
+  const Eigen::Vector3d& trail_point(int k) const {  // k = 1: the newest
+    return trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
+  }
 
   const CameraProblem* problem_;
   std::vector<csp::ConstraintId> framing_ids_;
