@@ -124,8 +124,10 @@ struct CutPolicy {
   // of any reason counted (a forced cut too); 0: no limit (the thesis profiles). A camera
   // left behind that keeps cutting is a camera that failed to anticipate: past the limit it
   // follows smoothly, still seeing the character, and does not cut for being late. The
-  // anticipating presets set 2 (issue 24: at most 2 cuts a minute beyond the thesis'
-  // rules, whatever their reason). In [0, 16].
+  // anticipating presets set 1: a stuck cut only in a minute without another cut, which
+  // leaves room for one forced cut (issue 24: at most 2 cuts a minute beyond the thesis'
+  // rules, whatever their reason; at 2, two stuck cuts and a forced one made 3 in 10 s while
+  // orbiting a pillar). In [0, 16].
   int stuck_per_minute = 0;
 
   bool operator==(const CutPolicy&) const = default;
