@@ -2,6 +2,8 @@
 // (FORMATS.md "The compose command"): solves the scene's shot: at one instant, prints the
 // satisfaction and each property's score, writes the pose file; exits 0 when the pose is
 // feasible, 1 when the solver found none (saying which rule it breaks), 2 on bad input.
+// With `--evaluate POSE.json` it solves nothing: it judges the pose of that pose file (any
+// tool's) on the shot at that instant, with the same output and exit status.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +19,7 @@
 #include "sightline/domains/camera/composition/composition_problem.h"
 #include "sightline/domains/camera/composition/composition_solvers.h"
 #include "sightline/domains/camera/composition/pose_file.h"
+#include "sightline/domains/camera/composition/pose_reading.h"
 #include "sightline/domains/camera/composition/shot.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/solvers/registry.h"
@@ -32,6 +35,7 @@ struct ComposeOptions {
   double budget_ms = 20;
   std::uint64_t seed = 1;
   std::string pose;
+  std::string evaluate;  // a pose file to judge instead of solving
   std::string format = "text";
 };
 
@@ -61,39 +65,55 @@ void run_compose(const ComposeOptions& o) {
   }
   const double t = std::isnan(o.time) ? earliest_keyframe(scene) : o.time;
   if (!std::isfinite(t)) throw std::invalid_argument("--time: expected a finite time in seconds");
-  camera::register_composition_solvers(solvers::SolverRegistry::global());
-  solvers::OptionValues values;
-  for (const std::string& s : o.settings) values.insert(solvers::split_option(s));
-  std::unique_ptr<solvers::Solver> solver = solvers::SolverRegistry::global().create(o.solver, values);
   const camera::CompositionProblem composition(scene, *scene.shot(), t);
-  if (std::string why = solver->unsuitable_reason(composition.problem()); !why.empty()) {
-    throw std::invalid_argument("solver '" + o.solver + "' cannot compose this shot: " + why);
-  }
-  solvers::SolveContext context;
-  context.seed = o.seed;
-  context.limits.time_limit_seconds = o.budget_ms / 1000;
-  // The start: the middle of the region, looking at the shot's first target.
   const camera::Shot& shot = *scene.shot();
-  camera::CameraPose start;
-  start.position = shot.region.centre();
-  start.look_at = composition.world().people()[static_cast<std::size_t>(
-                      composition.targets().front().front())].aim;
-  if ((start.look_at - start.position).norm() < 1e-6) start.look_at += Eigen::Vector3d::UnitZ();
-  start.fov = (shot.fov.lo + shot.fov.hi) / 2;
-  start.roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
-  start.aspect = shot.aspect;
-  const solvers::SolverResult result =
-      solver->solve(composition.problem(), composition.assignment(start), context);
-  const camera::CameraPose pose = composition.pose(result.best);
+  camera::CameraPose pose;
+  solvers::SolverResult result;
+  std::string note;  // what the text output says about the pose's origin
+  if (!o.evaluate.empty()) {
+    pose = camera::read_pose_file(o.evaluate);
+    // FORMATS.md: the aspect is always the shot's.
+    if (std::abs(pose.aspect - shot.aspect) > 1e-6 * shot.aspect) {
+      note = " (the pose file's aspect " + fixed(pose.aspect, 4) + " replaced by the shot's " +
+             fixed(shot.aspect, 4) + ")";
+    }
+    pose.aspect = shot.aspect;
+  } else {
+    camera::register_composition_solvers(solvers::SolverRegistry::global());
+    solvers::OptionValues values;
+    for (const std::string& s : o.settings) values.insert(solvers::split_option(s));
+    std::unique_ptr<solvers::Solver> solver =
+        solvers::SolverRegistry::global().create(o.solver, values);
+    if (std::string why = solver->unsuitable_reason(composition.problem()); !why.empty()) {
+      throw std::invalid_argument("solver '" + o.solver + "' cannot compose this shot: " + why);
+    }
+    solvers::SolveContext context;
+    context.seed = o.seed;
+    context.limits.time_limit_seconds = o.budget_ms / 1000;
+    // The start: the middle of the region, looking at the shot's first target.
+    camera::CameraPose start;
+    start.position = shot.region.centre();
+    start.look_at = composition.world().people()[static_cast<std::size_t>(
+                        composition.targets().front().front())].aim;
+    if ((start.look_at - start.position).norm() < 1e-6) start.look_at += Eigen::Vector3d::UnitZ();
+    start.fov = (shot.fov.lo + shot.fov.hi) / 2;
+    start.roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
+    start.aspect = shot.aspect;
+    result = solver->solve(composition.problem(), composition.assignment(start), context);
+    pose = composition.pose(result.best);
+  }
   const camera::ShotEvaluation e = composition.evaluate(pose);
   const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
-  camera::PoseFileExtras extras{t, o.solver, result.wall_seconds};
+  const std::string source = o.evaluate.empty() ? o.solver : "evaluated";
+  camera::PoseFileExtras extras{t, source, result.wall_seconds};
   if (o.format == "json") {
     std::cout << camera::pose_json(pose, composition, e, extras);
   } else {
-  std::cout << "Shot of " << scene.name() << " at t = " << fixed(t, 3) << " s, " << o.solver
-            << " (" << fixed(o.budget_ms, 1) << " ms budget): satisfaction " << fixed(e.satisfaction, 4)
+  std::cout << "Shot of " << scene.name() << " at t = " << fixed(t, 3) << " s, "
+            << (o.evaluate.empty() ? o.solver + " (" + fixed(o.budget_ms, 1) + " ms budget)"
+                                   : "the pose of " + o.evaluate + note)
+            << ": satisfaction " << fixed(e.satisfaction, 4)
             << ", " << (e.feasible ? "feasible" : "infeasible: " + e.why_infeasible) << ".\n";
   std::cout << "  camera " << fixed(pose.position.x(), 3) << " " << fixed(pose.position.y(), 3)
             << " " << fixed(pose.position.z(), 3) << ", looking at "
@@ -106,9 +126,13 @@ void run_compose(const ComposeOptions& o) {
               << fixed(e.measures[i], 4) << ", score " << fixed(e.scores[i], 4)
               << (p.hard ? " (hard)" : "") << "\n";
   }
-  std::cout << "  solve " << fixed(result.wall_seconds * 1000, 2) << " ms, "
-            << result.evaluations << " evaluations; whole command " << fixed(whole * 1000, 1)
-            << " ms\n";
+  if (o.evaluate.empty()) {
+    std::cout << "  solve " << fixed(result.wall_seconds * 1000, 2) << " ms, "
+              << result.evaluations << " evaluations; ";
+  } else {
+    std::cout << "  ";
+  }
+  std::cout << "whole command " << fixed(whole * 1000, 1) << " ms\n";
   }
   if (!o.pose.empty()) {
     std::ofstream out(o.pose);
@@ -116,7 +140,10 @@ void run_compose(const ComposeOptions& o) {
     if (!out) throw std::runtime_error("cannot write the pose file " + o.pose);
     if (o.format != "json") std::cout << "Pose written to " << o.pose << "\n";
   }
-  if (!e.feasible) throw RunFailed("no feasible pose found: " + e.why_infeasible);
+  if (!e.feasible) {
+    throw RunFailed((o.evaluate.empty() ? "no feasible pose found: " : "the pose is infeasible: ") +
+                    e.why_infeasible);
+  }
 }
 
 }  // namespace
@@ -126,15 +153,23 @@ void add_compose_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compose", "Solve a scene's shot: at one instant and write the camera's pose (JSON)");
   cmd->add_option("scene", options->scene, "scene file with a shot: block (FORMATS.md)")->required();
-  cmd->add_option("--solver", options->solver,
+  CLI::Option* solver = cmd->add_option("--solver", options->solver,
                   "registered solver or pipeline (default: shot-search, the recommended "
                   "composition solver)");
-  cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
+  CLI::Option* set = cmd->add_option("--set", options->settings, "solver option key=value (repeatable)");
   cmd->add_option("--time", options->time,
                   "the shot's time in seconds (default: the earliest keyframe of any person)");
-  cmd->add_option("--budget-ms", options->budget_ms, "time budget of the solve (default 20 ms)");
-  cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
+  CLI::Option* budget =
+      cmd->add_option("--budget-ms", options->budget_ms, "time budget of the solve (default 20 ms)");
+  CLI::Option* seed = cmd->add_option("--seed", options->seed, "random seed for stochastic solvers");
   cmd->add_option("--pose", options->pose, "write the pose file (JSON) here");
+  cmd->add_option("--evaluate", options->evaluate,
+                  "judge the pose of this pose file (JSON, FORMATS.md; any tool's) on the shot "
+                  "instead of solving: same output and exit status")
+      ->excludes(solver)
+      ->excludes(set)
+      ->excludes(budget)
+      ->excludes(seed);
   cmd->add_option("--format", options->format,
                   "text (the default) or json (the pose file's object on standard output)")
       ->check(CLI::IsMember({"text", "json"}));

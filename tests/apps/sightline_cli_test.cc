@@ -424,6 +424,39 @@ TEST(SightlineCli, FormatJsonOnSolveFollowAndCompose) {
   EXPECT_EQ(json_field(o.output, "any('why' in r for r in d)"), "True");  // grid skips some
 }
 
+// compose --evaluate judges a pose file's pose on the shot: compose's own pose, read back,
+// gets compose's verdict; another tool's infeasible pose exits 1 saying why; a malformed
+// pose file exits 2 naming its line.
+TEST(SightlineCli, ComposeEvaluatesAPoseFile) {
+  const std::string scene =
+      std::string(SIGHTLINE_SOURCE_DIR) + "/experiments/scenes/shots/walk-and-talk.yaml";
+  const TempFile pose("compose_pose.json", "");
+  Outcome o = run("compose " + scene + " --format json --pose " + pose.path());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const std::string solved = json_field(o.output, "(d['satisfaction'], d['feasible'])");
+  o = run("compose " + scene + " --format json --evaluate " + pose.path());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(json_field(o.output, "(d['satisfaction'], d['feasible'])"), solved);
+  EXPECT_EQ(json_field(o.output, "d['solver']"), "evaluated");
+
+  // Far outside the shot's region (a pose another tool might write): infeasible, exit 1.
+  const TempFile far("far_pose.json",
+                     "{\"position\": [500, 2, 500], \"look_at\": [0, 1.5, 0], \"roll\": 0, "
+                     "\"fov\": 50, \"aspect\": 1.7778, \"by\": \"another tool\"}");
+  o = run("compose " + scene + " --evaluate " + far.path());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_TRUE(contains(o.output, "the pose is infeasible")) << o.output;
+  EXPECT_TRUE(contains(o.output, "aspect 1.7778 replaced by the shot's")) << o.output;
+
+  const TempFile bad("bad_pose.json", "{\n\"position\": [0, 2],\n\"look_at\": [0, 1.5, 0]}");
+  o = run("compose " + scene + " --evaluate " + bad.path());
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_TRUE(contains(o.output, bad.path() + ":2:")) << o.output;
+  EXPECT_TRUE(contains(o.output, "expected a point [x, y, z]")) << o.output;
+  o = run("compose " + scene + " --evaluate " + bad.path() + " --solver grid");
+  EXPECT_EQ(o.status, 2) << o.output;
+}
+
 }  // namespace
 
 namespace {
