@@ -194,12 +194,19 @@ RunMetrics compute_metrics(const std::vector<TraceRow>& trace, const MetricsInpu
     velocity_ok[i] = true;
     speeds.push_back(velocity[i].norm());
   }
+  // Divided differences, so that a frame shorter than the others (the walk's last, cut at
+  // its end time) is measured as it is: the velocity between frames i-1 and i is
+  // f[t(i-1), t(i)], the acceleration 2 f[t(i-2), t(i-1), t(i)] and the jerk
+  // 6 f[t(i-3) .. t(i)], exact for a cubic whatever the spacing (with equal frames, the
+  // plain differences divided by the frame time).
   for (std::size_t i = 3; i < trace.size(); ++i) {
     if (!(velocity_ok[i] && velocity_ok[i - 1] && velocity_ok[i - 2])) continue;
-    const double dt = trace[i].t - trace[i - 1].t;
-    const Eigen::Vector3d a1 = (velocity[i] - velocity[i - 1]) / dt;
-    const Eigen::Vector3d a0 = (velocity[i - 1] - velocity[i - 2]) / dt;
-    jerks.push_back(((a1 - a0) / dt).norm());
+    const double span2 = trace[i].t - trace[i - 2].t, span2_before = trace[i - 1].t - trace[i - 3].t;
+    const double span3 = trace[i].t - trace[i - 3].t;
+    if (!(span2 > 0 && span2_before > 0 && span3 > 0)) continue;
+    const Eigen::Vector3d a1 = 2 * (velocity[i] - velocity[i - 1]) / span2;
+    const Eigen::Vector3d a0 = 2 * (velocity[i - 1] - velocity[i - 2]) / span2_before;
+    jerks.push_back((3 * (a1 - a0) / span3).norm());
   }
   m.speed_p99 = percentile(speeds, 99);
   m.speed_max = speeds.empty() ? 0 : *std::max_element(speeds.begin(), speeds.end());

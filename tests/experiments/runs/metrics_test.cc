@@ -91,6 +91,23 @@ TEST(RunMetrics, FlagsUnflaggedJumpsAndMeasuresSpeed) {
   EXPECT_NEAR(m.speed_max, 26.0, 1e-9);
 }
 
+// A camera moving as x = t^3 (jerk 6 m/s^3 throughout) at 60 frames a second, its last
+// frame 3 ms after the one before (a walk's end between frames): every jerk measured is 6.
+// (Divided by the last frame's own time step alone, the last sample came out at -680 along x.)
+TEST(RunMetrics, JerkIsExactForACubicEvenAcrossAShortLastFrame) {
+  MetricsInput input;
+  std::vector<TraceRow> trace;
+  auto at = [&](int frame, double t) {
+    TraceRow r = row(frame, {t * t * t, 2, -4});
+    r.t = t;
+    return r;
+  };
+  for (int f = 0; f < 12; ++f) trace.push_back(at(f, f / 60.0));
+  trace.push_back(at(12, 11 / 60.0 + 0.003));
+  const RunMetrics m = compute_metrics(trace, input);
+  EXPECT_NEAR(m.jerk_p99, 6.0, 1e-6);
+}
+
 TEST(RunMetrics, DeviationsFollowTheThesisDefinitions) {
   MetricsInput input;
   // Character at the origin facing +z; camera 3 m behind and 2.5 m up: height deviation 0.5,
