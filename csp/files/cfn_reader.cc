@@ -4,11 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <stdexcept>
 #include <vector>
 
 #include "sightline/csp/files/compressed_text.h"
+#include "sightline/csp/files/json_source.h"
 #include "sightline/csp/input_error.h"
 #include "sightline/csp/kinds/all_different.h"
 #include "sightline/csp/kinds/table.h"
@@ -24,7 +24,7 @@ constexpr std::size_t kMaxDomainSize = std::size_t{1} << 31;
 
 class CfnReader {
  public:
-  CfnReader(std::string_view text, std::string origin) : text_(text), origin_(std::move(origin)) {}
+  CfnReader(std::string_view text, std::string origin) : source_(text, std::move(origin)) {}
 
   std::unique_ptr<Problem> read() {
     const Json doc = parse();
@@ -42,37 +42,13 @@ class CfnReader {
   }
 
  private:
-  // --- positions --------------------------------------------------------------------------
+  // --- positions (json_source.h) ---------------------------------------------------------
 
   [[noreturn]] void fail(std::size_t offset, const std::string& message) const {
-    throw InputError(location(offset), message);
+    source_.fail(offset, message);
   }
-  SourceLocation location(std::size_t offset) const {
-    if (offset == 0) return {origin_, 0, 0};
-    offset = std::min(offset, text_.size());
-    int line = 1;
-    std::size_t line_start = 0;
-    for (std::size_t i = 0; i < offset; ++i) {
-      if (text_[i] == '\n') {
-        ++line;
-        line_start = i + 1;
-      }
-    }
-    return {origin_, line, static_cast<int>(offset - line_start) + 1};
-  }
-  // Where `"key":` appears in the text at or after `from` (the best position a semantic
-  // error can give: the parsed document keeps none); 0 (no position) if it does not.
   std::size_t find_key(const std::string& key, std::size_t from = 0) const {
-    const std::string quoted = Json(key).dump();
-    for (std::size_t at = text_.find(quoted, from); at != std::string_view::npos;
-         at = text_.find(quoted, at + 1)) {
-      std::size_t after = at + quoted.size();
-      while (after < text_.size() && std::isspace(static_cast<unsigned char>(text_[after]))) {
-        ++after;
-      }
-      if (after < text_.size() && text_[after] == ':') return at + 1;  // 1-based offset
-    }
-    return 0;
+    return source_.find_key(key, from);
   }
   std::size_t function_at(const std::string& name) const {
     const std::size_t functions = find_key("functions");
@@ -83,33 +59,7 @@ class CfnReader {
   // --- parsing ----------------------------------------------------------------------------
 
   Json parse() {
-    // Keys twice in one object would silently keep the last: the callback sees every key.
-    std::vector<std::set<std::string>> keys;
-    auto callback = [&](int, Json::parse_event_t event, Json& parsed) {
-      if (event == Json::parse_event_t::object_start) keys.emplace_back();
-      if (event == Json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-      if (event == Json::parse_event_t::key && !keys.empty()) {
-        const std::string key = parsed.get<std::string>();
-        if (!keys.back().insert(key).second) {
-          const std::size_t first = find_key(key);
-          const std::size_t second = find_key(key, first);
-          fail(second ? second : first, "key '" + key + "' is given twice in one object");
-        }
-      }
-      return true;
-    };
-    try {
-      return Json::parse(text_.begin(), text_.end(), callback);
-    } catch (const Json::parse_error& e) {
-      // e.byte is the 1-based index of the last character read.
-      std::string what = e.what();
-      if (const std::size_t colon = what.rfind(": "); colon != std::string::npos) {
-        what = what.substr(colon + 2);
-      }
-      fail(std::max<std::size_t>(e.byte, 1),
-           "not valid JSON (" + what +
-               "); toulbar2's relaxed CFN syntax (unquoted names, no commas) is not read");
-    }
+    return source_.parse("; toulbar2's relaxed CFN syntax (unquoted names, no commas) is not read");
   }
 
   static bool is_number_text(std::string_view s, double& out) {
@@ -488,8 +438,7 @@ class CfnReader {
     }
   }
 
-  std::string_view text_;
-  std::string origin_;
+  JsonSource source_;
   std::unique_ptr<Problem> problem_;
   double ub_ = 0;
   std::vector<std::int64_t> sizes_;

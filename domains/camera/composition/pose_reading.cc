@@ -1,27 +1,23 @@
 #include "sightline/domains/camera/composition/pose_reading.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <set>
 #include <sstream>
-#include <vector>
 
+#include "sightline/csp/files/json_source.h"
 #include "sightline/csp/input_error.h"
 
 namespace sightline::camera {
 namespace {
 
-using Json = nlohmann::json;
+using Json = nlohmann::ordered_json;
 
 class PoseReader {
  public:
-  PoseReader(std::string_view text, std::string origin) : text_(text), origin_(std::move(origin)) {}
+  PoseReader(std::string_view text, std::string origin) : source_(text, std::move(origin)) {}
 
   CameraPose read() {
-    const Json doc = parse();
+    const Json doc = source_.parse();
     if (!doc.is_object()) {
       fail(1, "expected a JSON object {\"position\": [x, y, z], \"look_at\": [x, y, z], "
               "\"roll\": r, \"fov\": f, \"aspect\": a}");
@@ -48,72 +44,9 @@ class PoseReader {
 
  private:
   [[noreturn]] void fail(std::size_t offset, const std::string& message) const {
-    throw csp::InputError(location(offset), message);
+    source_.fail(offset, message);
   }
-  // 1-based offset -> file:line:column (0: the file alone).
-  csp::SourceLocation location(std::size_t offset) const {
-    if (offset == 0) return {origin_, 0, 0};
-    offset = std::min(offset, text_.size());
-    int line = 1;
-    std::size_t line_start = 0;
-    for (std::size_t i = 0; i + 1 < offset; ++i) {
-      if (text_[i] == '\n') {
-        ++line;
-        line_start = i + 1;
-      }
-    }
-    return {origin_, line, static_cast<int>(offset - line_start)};
-  }
-  // Where `"key":` first appears (1-based), or 0.
-  std::size_t find_key(const std::string& key, std::size_t from = 0) const {
-    const std::string quoted = Json(key).dump();
-    for (std::size_t at = text_.find(quoted, from); at != std::string_view::npos;
-         at = text_.find(quoted, at + 1)) {
-      std::size_t after = at + quoted.size();
-      while (after < text_.size() && std::isspace(static_cast<unsigned char>(text_[after]))) {
-        ++after;
-      }
-      if (after < text_.size() && text_[after] == ':') return at + 1;
-    }
-    return 0;
-  }
-
-  Json parse() {
-    // A key given twice would silently keep the last: the callback sees every key.
-    std::vector<std::set<std::string>> keys;
-    auto callback = [&](int, Json::parse_event_t event, Json& parsed) {
-      if (event == Json::parse_event_t::object_start) keys.emplace_back();
-      if (event == Json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-      if (event == Json::parse_event_t::key && !keys.empty()) {
-        const std::string key = parsed.get<std::string>();
-        if (!keys.back().insert(key).second) {
-          const std::size_t first = find_key(key);
-          const std::size_t second = find_key(key, first);
-          fail(second ? second : first, "key '" + key + "' is given twice in one object");
-        }
-      }
-      return true;
-    };
-    try {
-      return Json::parse(text_.begin(), text_.end(), callback);
-    } catch (const Json::parse_error& e) {
-      std::string what = e.what();
-      if (const std::size_t colon = what.rfind(": "); colon != std::string::npos) {
-        what = what.substr(colon + 2);
-      }
-      fail(std::max<std::size_t>(e.byte, 1), "not valid JSON (" + what + ")");
-    } catch (const Json::out_of_range& e) {
-      // A number no double holds (1e999): at the number, when it can be found.
-      const std::string what = e.what();
-      const std::size_t open = what.find('\''), close = what.rfind('\'');
-      std::size_t at = 0;
-      if (open != std::string::npos && close > open) {
-        const std::size_t found = text_.find(what.substr(open + 1, close - open - 1));
-        if (found != std::string_view::npos) at = found + 1;
-      }
-      fail(at, "a number too large for a double");
-    }
-  }
+  std::size_t find_key(const std::string& key) const { return source_.find_key(key); }
 
   const Json& field(const Json& doc, const std::string& key, const std::string& what) const {
     const auto it = doc.find(key);
@@ -144,8 +77,7 @@ class PoseReader {
     return v;
   }
 
-  std::string_view text_;
-  std::string origin_;
+  csp::JsonSource source_;
 };
 
 }  // namespace
