@@ -16,6 +16,7 @@
 
 #include "apps/commands.h"
 #include "apps/solve_options.h"
+#include "sightline/domains/camera/composition/compose.h"
 #include "sightline/domains/camera/composition/composition_problem.h"
 #include "sightline/domains/camera/composition/composition_solvers.h"
 #include "sightline/domains/camera/composition/pose_file.h"
@@ -39,13 +40,6 @@ struct ComposeOptions {
   std::string format = "text";
 };
 
-// FORMATS.md: the default time is the earliest keyframe of any actor (or of the character).
-double earliest_keyframe(const camera::Scene& scene) {
-  double t = scene.trajectory().start_time();
-  for (const camera::Actor& a : scene.actors()) t = std::min(t, a.trajectory.start_time());
-  return t;
-}
-
 std::string fixed(double v, int digits) {
   if (!std::isfinite(v)) return v > 0 ? "inf" : (std::isnan(v) ? "undefined" : "-inf");
   char text[32];
@@ -63,7 +57,7 @@ void run_compose(const ComposeOptions& o) {
   if (!(o.budget_ms > 0) || !std::isfinite(o.budget_ms)) {
     throw std::invalid_argument("--budget-ms: expected a time in milliseconds > 0");
   }
-  const double t = std::isnan(o.time) ? earliest_keyframe(scene) : o.time;
+  const double t = std::isnan(o.time) ? camera::earliest_keyframe(scene) : o.time;
   if (!std::isfinite(t)) throw std::invalid_argument("--time: expected a finite time in seconds");
   const camera::CompositionProblem composition(scene, *scene.shot(), t);
   const camera::Shot& shot = *scene.shot();
@@ -84,23 +78,12 @@ void run_compose(const ComposeOptions& o) {
     for (const std::string& s : o.settings) values.insert(solvers::split_option(s));
     std::unique_ptr<solvers::Solver> solver =
         solvers::SolverRegistry::global().create(o.solver, values);
-    if (std::string why = solver->unsuitable_reason(composition.problem()); !why.empty()) {
-      throw std::invalid_argument("solver '" + o.solver + "' cannot compose this shot: " + why);
-    }
     solvers::SolveContext context;
     context.seed = o.seed;
     context.limits.time_limit_seconds = o.budget_ms / 1000;
-    // The start: the middle of the region, looking at the shot's first target.
-    camera::CameraPose start;
-    start.position = shot.region.centre();
-    start.look_at = composition.world().people()[static_cast<std::size_t>(
-                        composition.targets().front().front())].aim;
-    if ((start.look_at - start.position).norm() < 1e-6) start.look_at += Eigen::Vector3d::UnitZ();
-    start.fov = (shot.fov.lo + shot.fov.hi) / 2;
-    start.roll = std::clamp(0.0, shot.roll.lo, shot.roll.hi);
-    start.aspect = shot.aspect;
-    result = solver->solve(composition.problem(), composition.assignment(start), context);
-    pose = composition.pose(result.best);
+    const camera::Composed composed = camera::compose(composition, *solver, context);
+    result = composed.result;
+    pose = composed.pose;
   }
   const camera::ShotEvaluation e = composition.evaluate(pose);
   const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();

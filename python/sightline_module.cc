@@ -26,6 +26,9 @@
 #include "sightline/csp/input_error.h"
 #include "sightline/csp/kinds/builder.h"
 #include "sightline/csp/kinds/constraint_kinds.h"
+#include "sightline/domains/camera/composition/compose.h"
+#include "sightline/domains/camera/composition/composition_solvers.h"
+#include "sightline/domains/camera/composition/pose_reading.h"
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/execution/interruption.h"
@@ -243,6 +246,96 @@ py::dict follow(const std::string& scene_path, const std::string& solver, const 
   return out;
 }
 
+// A shot's pose and its verdict, as compose's pose file has them (FORMATS.md "Shots").
+py::dict shot_dict(const camera::CameraPose& pose, const camera::CompositionProblem& problem,
+                   const camera::ShotEvaluation& e, double t) {
+  auto point = [](const Eigen::Vector3d& v) { return py::make_tuple(v.x(), v.y(), v.z()); };
+  py::dict d;
+  d["position"] = point(pose.position);
+  d["look_at"] = point(pose.look_at);
+  d["roll"] = pose.roll;
+  d["fov"] = pose.fov;
+  d["aspect"] = pose.aspect;
+  d["time"] = t;
+  d["feasible"] = e.feasible;
+  d["why_infeasible"] = e.why_infeasible;
+  d["satisfaction"] = e.satisfaction;
+  d["cost"] = e.cost;
+  py::list properties;
+  const std::vector<camera::ShotProperty>& shot = problem.shot().properties;
+  for (std::size_t i = 0; i < shot.size(); ++i) {
+    properties.append(py::dict(py::arg("kind") = shot[i].kind, py::arg("targets") = shot[i].targets,
+                               py::arg("line") = shot[i].where.line, py::arg("hard") = shot[i].hard,
+                               py::arg("measure") = e.measures[i], py::arg("score") = e.scores[i]));
+  }
+  d["properties"] = properties;
+  return d;
+}
+
+// The scene's shot and its time (None: the earliest keyframe, as compose).
+std::pair<camera::Scene, double> scene_with_shot(const std::string& scene_path, const py::object& time) {
+  camera::Scene scene = camera::read_scene_file(scene_path);
+  if (!scene.shot()) {
+    throw std::invalid_argument(scene_path + ": the scene has no shot: block to compose (FORMATS.md \"Shots\")");
+  }
+  const double t = time.is_none() ? camera::earliest_keyframe(scene) : time.cast<double>();
+  if (!std::isfinite(t)) throw std::invalid_argument("time: expected a finite time in seconds");
+  return {std::move(scene), t};
+}
+
+py::dict compose(const std::string& scene_path, const std::string& solver_name, const py::object& time,
+                 double budget_ms, std::uint64_t seed, const py::dict& options) {
+  if (!(budget_ms > 0) || !std::isfinite(budget_ms)) throw std::invalid_argument("budget_ms: expected > 0");
+  const auto [scene, t] = scene_with_shot(scene_path, time);
+  const camera::CompositionProblem problem(scene, *scene.shot(), t);
+  solvers::OptionValues values;
+  for (const auto& [k, v] : options) values[py::str(k)] = py::str(v);
+  std::unique_ptr<solvers::Solver> solver = solvers::SolverRegistry::global().create(
+      solver_name.empty() ? camera::kRecommendedCompositionSolver : solver_name, values);
+  solvers::SolveContext context;
+  context.seed = seed;
+  context.limits.time_limit_seconds = budget_ms / 1000;
+  camera::Composed composed;
+  {
+    py::gil_scoped_release release;
+    composed = camera::compose(problem, *solver, context);
+  }
+  py::dict d = shot_dict(composed.pose, problem, composed.evaluation, t);
+  d["solver"] = solver->name();
+  d["solve_seconds"] = composed.result.wall_seconds;
+  d["evaluations"] = composed.result.evaluations;
+  return d;
+}
+
+py::dict evaluate_pose(const std::string& scene_path, const py::object& pose_in, const py::object& time) {
+  const auto [scene, t] = scene_with_shot(scene_path, time);
+  const camera::CompositionProblem problem(scene, *scene.shot(), t);
+  camera::CameraPose pose;
+  if (py::isinstance<py::str>(pose_in)) {
+    pose = camera::read_pose_file(pose_in.cast<std::string>());
+  } else {
+    // A mapping with FORMATS.md's fields, as compose() returns (aspect optional: the shot's).
+    const py::dict d = pose_in.cast<py::dict>();
+    auto point = [&](const char* key) {
+      if (!d.contains(key)) throw std::invalid_argument(std::string("pose: missing '") + key + "'");
+      const std::vector<double> v = d[key].cast<std::vector<double>>();
+      if (v.size() != 3) throw std::invalid_argument(std::string("pose: '") + key + "' needs 3 numbers");
+      return Eigen::Vector3d(v[0], v[1], v[2]);
+    };
+    pose.position = point("position");
+    pose.look_at = point("look_at");
+    pose.roll = d.contains("roll") ? d["roll"].cast<double>() : 0.0;
+    if (!d.contains("fov")) throw std::invalid_argument("pose: missing 'fov'");
+    pose.fov = d["fov"].cast<double>();
+  }
+  pose.aspect = scene.shot()->aspect;  // FORMATS.md: the aspect is always the shot's
+  if (!camera::View::of(pose)) {
+    throw std::invalid_argument("pose: not a view (the look-at point at the position or straight "
+                                "above or below it, a fov outside (0, 180), or a number not finite)");
+  }
+  return shot_dict(pose, problem, problem.evaluate(pose), t);
+}
+
 py::dict run_suite(const std::string& path, const std::string& out_dir, unsigned jobs,
                    bool isolated, const std::string& program) {
   const experiments::Suite suite = experiments::read_suite_file(path);
@@ -424,6 +517,16 @@ PYBIND11_MODULE(_sightline, m) {
         "Films a scene: {'trace': numpy structured array, 'summary': str, 'metrics': dict}; a scene "
         "with only a script is edited (solver: the editing model's, default chain; 'greedy'), "
         "adding 'shots' [(start, name)] and 'edit' (the continuity judge's metrics).");
+  m.def("compose", &compose, py::arg("scene"), py::arg("solver") = "", py::arg("time") = py::none(),
+        py::arg("budget_ms") = 20.0, py::arg("seed") = 1, py::arg("options") = py::dict(),
+        "Solves a scene's shot: at one instant (time None: the earliest keyframe), as `sightline "
+        "compose`: the pose (position, look_at, roll, fov, aspect), feasible, why_infeasible, "
+        "satisfaction, cost, properties [{kind, targets, line, hard, measure, score}], solver, "
+        "solve_seconds, evaluations.");
+  m.def("evaluate_pose", &evaluate_pose, py::arg("scene"), py::arg("pose"), py::arg("time") = py::none(),
+        "Judges a pose on a scene's shot, as `sightline compose --evaluate`: `pose` is a pose file's "
+        "path or a dict with position, look_at, fov and roll (as compose() returns); the shot's "
+        "aspect is used. Returns what compose() does but the solver's fields.");
   m.def("run_suite", &run_suite, py::arg("suite"), py::arg("out"), py::arg("jobs") = 1,
         py::arg("isolated") = false, py::arg("program") = "",
         "Runs (or resumes) a suite into `out`; isolated runs need `program` (the sightline binary).");

@@ -311,3 +311,38 @@ def test_the_examples_of_docs_python_md_run(tmp_path, source_dir, monkeypatch):
         block = block.replace('"experiments/suites/solvers.yaml"', repr(str(small)))
         block = block.replace('"out/solvers"', repr(str(tmp_path / "out")))
         exec(compile(block, "docs/PYTHON.md", "exec"), namespace)
+
+
+def test_a_shot_composed_in_python_is_judged_alike_by_the_program(tmp_path, binary, source_dir):
+    """compose() and evaluate_pose() against `sightline compose --evaluate`: the pose Python
+    found, written as a pose file, gets the same verdict from the program; a dict and the
+    file's path are judged alike; a pose that is no view and a scene without a shot raise."""
+    import json
+    scene = os.path.join(source_dir, "experiments/scenes/shots/walk-and-talk.yaml")
+    shot = sl.compose(scene, time=1.0)
+    assert shot["feasible"] and shot["solver"] == "shot-search" and shot["time"] == 1.0
+    assert [p["kind"] for p in shot["properties"]]
+    assert all(0 <= p["score"] <= 1 for p in shot["properties"])
+    pose_path = tmp_path / "pose.json"
+    pose_path.write_text(json.dumps({k: shot[k] for k in ("position", "look_at", "roll", "fov", "aspect")}))
+    out = subprocess.run([binary, "compose", scene, "--time", "1", "--evaluate", str(pose_path),
+                          "--format", "json"], check=True, capture_output=True, text=True)
+    judged = json.loads(out.stdout)
+    assert judged["satisfaction"] == pytest.approx(shot["satisfaction"], abs=1e-12)
+    assert judged["feasible"] == shot["feasible"]
+    by_path = sl.evaluate_pose(scene, str(pose_path), time=1.0)
+    by_dict = sl.evaluate_pose(scene, shot, time=1.0)
+    assert by_path["satisfaction"] == by_dict["satisfaction"] == pytest.approx(shot["satisfaction"])
+    # Far outside the region: judged, infeasible, saying why.
+    far = dict(shot, position=(500.0, 2.0, 500.0))
+    verdict = sl.evaluate_pose(scene, far, time=1.0)
+    assert not verdict["feasible"] and verdict["why_infeasible"]
+    with pytest.raises(ValueError, match="not a view"):
+        sl.evaluate_pose(scene, dict(shot, look_at=shot["position"]))
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"position": [0, 1]}')
+    with pytest.raises(sl.InputError) as e:
+        sl.evaluate_pose(scene, str(bad))
+    assert e.value.line == 1
+    with pytest.raises(ValueError, match="no shot"):
+        sl.compose(os.path.join(source_dir, "experiments/scenes/open-field.yaml"))
