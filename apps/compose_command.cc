@@ -50,18 +50,15 @@ std::string fixed(double v, int digits) {
 void run_compose(const ComposeOptions& o) {
   const auto began = std::chrono::steady_clock::now();
   const camera::Scene scene = camera::read_scene_file(o.scene);
-  if (!scene.shot()) {
-    throw std::invalid_argument(o.scene + ": the scene has no shot: block to compose "
-                                "(FORMATS.md \"Shots\")");
-  }
+  const camera::Shot& shot = camera::shot_to_compose(scene, o.scene);
   if (!(o.budget_ms > 0) || !std::isfinite(o.budget_ms)) {
     throw std::invalid_argument("--budget-ms: expected a time in milliseconds > 0");
   }
-  const double t = std::isnan(o.time) ? camera::earliest_keyframe(scene) : o.time;
-  if (!std::isfinite(t)) throw std::invalid_argument("--time: expected a finite time in seconds");
-  const camera::CompositionProblem composition(scene, *scene.shot(), t);
-  const camera::Shot& shot = *scene.shot();
+  const double t = camera::compose_time(
+      scene, std::isnan(o.time) ? std::nullopt : std::optional<double>(o.time), "--time");
+  const camera::CompositionProblem composition(scene, shot, t);
   camera::CameraPose pose;
+  camera::ShotEvaluation e;
   solvers::SolverResult result;
   std::string note;  // what the text output says about the pose's origin
   if (!o.evaluate.empty()) {
@@ -72,6 +69,7 @@ void run_compose(const ComposeOptions& o) {
              fixed(shot.aspect, 4) + ")";
     }
     pose.aspect = shot.aspect;
+    e = composition.evaluate(pose);
   } else {
     camera::register_composition_solvers(solvers::SolverRegistry::global());
     solvers::OptionValues values;
@@ -84,8 +82,8 @@ void run_compose(const ComposeOptions& o) {
     const camera::Composed composed = camera::compose(composition, *solver, context);
     result = composed.result;
     pose = composed.pose;
+    e = composed.evaluation;
   }
-  const camera::ShotEvaluation e = composition.evaluate(pose);
   const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
   const std::string source = o.evaluate.empty() ? o.solver : "evaluated";

@@ -148,16 +148,22 @@ struct PyResult {
   }
 };
 
-PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dict& options,
-               std::optional<double> time_limit, std::optional<std::uint64_t> max_evaluations,
-               std::optional<std::uint64_t> max_iterations, std::uint64_t seed,
-               std::optional<std::vector<double>> start) {
+// A solver's options from a Python dict: values as text, booleans as true / false.
+solvers::OptionValues option_values(const py::dict& options) {
   solvers::OptionValues values;
   for (const auto& [k, v] : options) {
     values[py::str(k)] = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "true" : "false")
                                                       : std::string(py::str(v));
   }
-  std::unique_ptr<solvers::Solver> solver = solvers::SolverRegistry::global().create(solver_name, values);
+  return values;
+}
+
+PyResult solve(const PyProblem& p, const std::string& solver_name, const py::dict& options,
+               std::optional<double> time_limit, std::optional<std::uint64_t> max_evaluations,
+               std::optional<std::uint64_t> max_iterations, std::uint64_t seed,
+               std::optional<std::vector<double>> start) {
+  std::unique_ptr<solvers::Solver> solver =
+      solvers::SolverRegistry::global().create(solver_name, option_values(options));
   if (std::string why = solver->unsuitable_reason(*p.problem); !why.empty()) {
     throw std::invalid_argument(solver_name + " cannot solve '" + p.problem->name() + "': " + why);
   }
@@ -272,26 +278,15 @@ py::dict shot_dict(const camera::CameraPose& pose, const camera::CompositionProb
   return d;
 }
 
-// The scene's shot and its time (None: the earliest keyframe, as compose).
-std::pair<camera::Scene, double> scene_with_shot(const std::string& scene_path, const py::object& time) {
-  camera::Scene scene = camera::read_scene_file(scene_path);
-  if (!scene.shot()) {
-    throw std::invalid_argument(scene_path + ": the scene has no shot: block to compose (FORMATS.md \"Shots\")");
-  }
-  const double t = time.is_none() ? camera::earliest_keyframe(scene) : time.cast<double>();
-  if (!std::isfinite(t)) throw std::invalid_argument("time: expected a finite time in seconds");
-  return {std::move(scene), t};
-}
-
-py::dict compose(const std::string& scene_path, const std::string& solver_name, const py::object& time,
+py::dict compose(const std::string& scene_path, const std::string& solver_name, std::optional<double> time,
                  double budget_ms, std::uint64_t seed, const py::dict& options) {
   if (!(budget_ms > 0) || !std::isfinite(budget_ms)) throw std::invalid_argument("budget_ms: expected > 0");
-  const auto [scene, t] = scene_with_shot(scene_path, time);
-  const camera::CompositionProblem problem(scene, *scene.shot(), t);
-  solvers::OptionValues values;
-  for (const auto& [k, v] : options) values[py::str(k)] = py::str(v);
+  const camera::Scene scene = camera::read_scene_file(scene_path);
+  const camera::Shot& shot = camera::shot_to_compose(scene, scene_path);
+  const double t = camera::compose_time(scene, time, "time");
+  const camera::CompositionProblem problem(scene, shot, t);
   std::unique_ptr<solvers::Solver> solver = solvers::SolverRegistry::global().create(
-      solver_name.empty() ? camera::kRecommendedCompositionSolver : solver_name, values);
+      solver_name.empty() ? camera::kRecommendedCompositionSolver : solver_name, option_values(options));
   solvers::SolveContext context;
   context.seed = seed;
   context.limits.time_limit_seconds = budget_ms / 1000;
@@ -307,9 +302,11 @@ py::dict compose(const std::string& scene_path, const std::string& solver_name, 
   return d;
 }
 
-py::dict evaluate_pose(const std::string& scene_path, const py::object& pose_in, const py::object& time) {
-  const auto [scene, t] = scene_with_shot(scene_path, time);
-  const camera::CompositionProblem problem(scene, *scene.shot(), t);
+py::dict evaluate_pose(const std::string& scene_path, const py::object& pose_in, std::optional<double> time) {
+  const camera::Scene scene = camera::read_scene_file(scene_path);
+  const camera::Shot& shot = camera::shot_to_compose(scene, scene_path);
+  const double t = camera::compose_time(scene, time, "time");
+  const camera::CompositionProblem problem(scene, shot, t);
   camera::CameraPose pose;
   if (py::isinstance<py::str>(pose_in)) {
     pose = camera::read_pose_file(pose_in.cast<std::string>());
@@ -328,7 +325,7 @@ py::dict evaluate_pose(const std::string& scene_path, const py::object& pose_in,
     if (!d.contains("fov")) throw std::invalid_argument("pose: missing 'fov'");
     pose.fov = d["fov"].cast<double>();
   }
-  pose.aspect = scene.shot()->aspect;  // FORMATS.md: the aspect is always the shot's
+  pose.aspect = shot.aspect;  // FORMATS.md: the aspect is always the shot's
   if (!camera::View::of(pose)) {
     throw std::invalid_argument("pose: not a view (the look-at point at the position or straight "
                                 "above or below it, a fov outside (0, 180), or a number not finite)");

@@ -1,6 +1,7 @@
 #include "sightline/domains/camera/composition/compose.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace sightline::camera {
@@ -8,6 +9,20 @@ namespace sightline::camera {
 double earliest_keyframe(const Scene& scene) {
   double t = scene.trajectory().start_time();
   for (const Actor& a : scene.actors()) t = std::min(t, a.trajectory.start_time());
+  return t;
+}
+
+const Shot& shot_to_compose(const Scene& scene, const std::string& origin) {
+  if (!scene.shot()) {
+    throw std::invalid_argument(origin + ": the scene has no shot: block to compose "
+                                "(FORMATS.md \"Shots\")");
+  }
+  return *scene.shot();
+}
+
+double compose_time(const Scene& scene, std::optional<double> time, const std::string& what) {
+  const double t = time ? *time : earliest_keyframe(scene);
+  if (!std::isfinite(t)) throw std::invalid_argument(what + ": expected a finite time in seconds");
   return t;
 }
 

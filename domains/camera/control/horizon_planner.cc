@@ -96,6 +96,17 @@ void HorizonPlanner::record_trail(const Eigen::Vector3d& look) {
   }
 }
 
+std::optional<Eigen::Vector3d> HorizonPlanner::at_shot_height(const Eigen::Vector3d& p,
+                                                              double rise) const {
+  const SceneAtTime& geometry = problem_->scene_at_time();
+  const Eigen::Vector3d raised = p + Eigen::Vector3d(0, rise, 0);
+  if (!has_room(geometry, raised, problem_->profile().clearance_radius) ||
+      !geometry.line_of_sight(raised, p)) {
+    return std::nullopt;
+  }
+  return raised;
+}
+
 std::optional<Eigen::Vector3d> HorizonPlanner::chase_on_trail(
     const Eigen::Vector3d& look, const Eigen::Vector3d& ideal,
     Eigen::Vector3d& chase_velocity) const {
@@ -108,16 +119,10 @@ std::optional<Eigen::Vector3d> HorizonPlanner::chase_on_trail(
     if (walked + leg >= distance && leg > 1e-9) {
       const Eigen::Vector3d along = (newer - older) / leg;
       const Eigen::Vector3d p = newer - (distance - walked) * along;
-      const SceneAtTime& geometry_now = problem_->scene_at_time();
-      const double radius = problem_->profile().clearance_radius;
-      Eigen::Vector3d raised = p;
-      raised.y() += ideal.y() - look.y();
-      const bool high = has_room(geometry_now, raised, radius) &&
-                        geometry_now.line_of_sight(raised, p);
       Eigen::Vector3d speed = problem_->character().velocity;
       speed.y() = 0;
       chase_velocity = along * speed.norm();
-      return high ? raised : p;
+      return at_shot_height(p, ideal.y() - look.y()).value_or(p);
     }
     walked += leg;
     newer = older;
@@ -150,21 +155,16 @@ std::optional<Eigen::Vector3d> HorizonPlanner::follow_trail(const State& now,
   last_off_ideal_ = off;
   if (!following_trail_) return std::nullopt;
   for (int k = 1; k <= trail_size_; ++k) {
-    const Eigen::Vector3d& p =
-        trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
+    const Eigen::Vector3d& p = trail_point(k);
     // At the shot's height above her path where there is room (no ceiling in the way),
     // else at her look-at height, where her body was.
-    Eigen::Vector3d raised = p;
-    raised.y() += ideal.y() - look.y();
-    const bool high = has_room(geometry_now, raised, radius) &&
-                      geometry_now.line_of_sight(raised, p) &&
-                      geometry_now.line_of_sight(now.position, raised);
+    const std::optional<Eigen::Vector3d> raised = at_shot_height(p, ideal.y() - look.y());
+    const bool high = raised && geometry_now.line_of_sight(now.position, *raised);
     if (high || (geometry_now.line_of_sight(now.position, p) &&
                  has_room(geometry_now, p, radius))) {
-      const Eigen::Vector3d waypoint = high ? raised : p;
+      const Eigen::Vector3d waypoint = high ? *raised : p;
       // Moving on along her path at the target's speed: the way she went from there.
-      const Eigen::Vector3d& next = trail_[static_cast<std::size_t>(
-          (trail_next_ + kTrailPoints - std::max(1, k - 1)) % kTrailPoints)];
+      const Eigen::Vector3d& next = trail_point(std::max(1, k - 1));
       const Eigen::Vector3d along = next - p;
       trail_velocity = along.norm() > 1e-9
                            ? Eigen::Vector3d(along.normalized() * target_velocity.norm())

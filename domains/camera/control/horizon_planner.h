@@ -143,6 +143,9 @@ class HorizonPlanner {
   std::optional<Eigen::Vector3d> chase_on_trail(const Eigen::Vector3d& look,
                                                 const Eigen::Vector3d& ideal,
                                                 Eigen::Vector3d& chase_velocity) const;
+  // A point of her trail raised by `rise` (to the shot's height), when there is room there
+  // and nothing between it and her path (no ceiling in the way); nullopt otherwise.
+  std::optional<Eigen::Vector3d> at_shot_height(const Eigen::Vector3d& p, double rise) const;
   const Eigen::Vector3d& trail_point(int k) const {  // k = 1: the newest
     return trail_[static_cast<std::size_t>((trail_next_ + kTrailPoints - k) % kTrailPoints)];
   }
