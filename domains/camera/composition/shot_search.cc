@@ -36,6 +36,7 @@ struct ShotSearchScratch {
   shot_search_detail::Vantage group;
   std::vector<double> bearings;
   std::vector<int> targets;
+  std::vector<int> excluded;
   csp::Assignment values;
 };
 
@@ -69,10 +70,19 @@ class Framing {
  public:
   // `targets` and `values` are storage kept between solves.
   Framing(const csp::Problem& problem, const CompositionProblem& owner, std::vector<int>& targets,
-          csp::Assignment& values)
-      : problem_(&problem), owner_(&owner), targets_(targets), values_(values) {
+          std::vector<int>& excluded, csp::Assignment& values)
+      : problem_(&problem), owner_(&owner), targets_(targets), excluded_(excluded), values_(values) {
     const auto& people = owner.world().people();
     targets_ = owner.wanted();
+    excluded_.clear();
+    for (const std::vector<int>& ts : owner.targets()) {
+      for (int t : ts) {
+        if (std::find(targets_.begin(), targets_.end(), t) == targets_.end() &&
+            std::find(excluded_.begin(), excluded_.end(), t) == excluded_.end()) {
+          excluded_.push_back(t);
+        }
+      }
+    }
     centre_.setZero();
     for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
     centre_ /= static_cast<double>(std::max<std::size_t>(1, targets_.size()));
@@ -96,6 +106,44 @@ class Framing {
     return values_;
   }
   csp::Score score(const Point& x) { return problem_->score(values(x)); }
+
+  // The aim of x turned just enough to take the people the shot keeps out who are on
+  // screen at x off one edge of the image (`side`: 0 left, 1 right, 2 bottom, 3 top), their
+  // bodies' corners `beyond` screen units past it: a group's shot with someone standing
+  // among them may do best giving up a wanted person on that side. False when no one kept
+  // out is on screen, or when a corner of theirs is behind the camera.
+  bool turn_away(Point& x, int side, double beyond) {
+    const std::optional<View> view = View::of(owner_->pose(values(x)));
+    if (!view) return false;
+    const auto& people = owner_->world().people();
+    const int axis = side / 2;
+    double shift = 0;  // screen units along the axis, toward the side (> 0)
+    for (int e : excluded_) {
+      const PersonAtTime& person = people[static_cast<std::size_t>(e)];
+      const std::optional<Eigen::Vector2d> s = view->project(person.aim);
+      if (!s || s->minCoeff() <= 0 || s->maxCoeff() >= 1) continue;
+      for (int c = 0; c < 8; ++c) {
+        const Eigen::Vector3d corner((c & 1) ? person.body.max.x() : person.body.min.x(),
+                                     (c & 2) ? person.body.max.y() : person.body.min.y(),
+                                     (c & 4) ? person.body.max.z() : person.body.min.z());
+        const std::optional<Eigen::Vector2d> q = view->project(corner);
+        if (!q) return false;
+        shift = std::max(shift, side % 2 == 0 ? (*q)[axis] + beyond : 1 + beyond - (*q)[axis]);
+      }
+    }
+    if (shift == 0) return false;
+    // Screen units to degrees near the image's centre: 1 unit is 2 tan(fov/2) (x aspect).
+    // A larger yaw turns the view left (points move right); a larger pitch looks up
+    // (points move down).
+    const double tan_half = std::tan(x[5] * kRadians / 2) * (axis == 0 ? owner_->shot().aspect : 1.0);
+    const double degrees = 2 * std::atan(tan_half) * kDegrees * shift;
+    if (axis == 0) {
+      x[3] += side == 0 ? -degrees : degrees;
+    } else {
+      x[4] += side == 2 ? degrees : -degrees;
+    }
+    return true;
+  }
 
   // Aim offsets that put the screen_position targets at their points (a few Newton steps
   // on their mean screen error), from (0, 0): the centre at the image's centre.
@@ -150,6 +198,7 @@ class Framing {
   const CompositionProblem* owner_;
   Eigen::Vector3d centre_;
   std::vector<int>& targets_;
+  std::vector<int>& excluded_;  // people the shot keeps out who are not also wanted
   csp::Assignment& values_;
 };
 
@@ -240,7 +289,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     scratch_->group.elevations.reserve(64);
   }
   ShotSearchScratch& scratch = *scratch_;
-  Framing framing(problem, *owner, scratch.targets, scratch.values);
+  Framing framing(problem, *owner, scratch.targets, scratch.excluded, scratch.values);
   const Shot& shot = owner->shot();
   auto clamp = [&](Point& x) {
     for (int k : {0, 1, 2, 5, 6}) x[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x[k]);
@@ -254,13 +303,28 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   candidates.clear();
   // A candidate at p aimed at the targets (and, when several are wanted, a second one aimed
   // at `subject` alone: a shot that cannot hold them all may do best on one).
+  // With a time limit, the candidates take at most 40% of it, so that the best of them
+  // are refined: with several people there are more candidates than a 2 ms budget scores.
+  const double candidate_seconds = 0.4 * context.limits.time_limit_seconds;
+  auto candidates_done = [&] {
+    return budget.exhausted(evaluations, iterations) ||
+           (candidate_seconds > 0 && budget.elapsed_seconds() > candidate_seconds);
+  };
   auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d* subject = nullptr) {
-    if (!candidates.empty() && budget.exhausted(evaluations, iterations)) return;
+    if (!candidates.empty() && candidates_done()) return;
     Point x{p.x(), p.y(), p.z(), 0, 0, fov, roll};
     clamp(x);
     framing.aim(x);
     candidates.emplace_back(framing.score(x), x);
     ++evaluations;
+    // Someone the shot keeps out on screen: the view turned to each side that can take
+    // them off it.
+    for (int side = 0; side < 4; ++side) {
+      Point y = x;
+      if (candidates_done() || !framing.turn_away(y, side, 0.02)) continue;
+      candidates.emplace_back(framing.score(y), y);
+      ++evaluations;
+    }
     if (subject == nullptr || framing.targets().size() < 2) return;
     const csp::Assignment& to_centre = framing.values(x);
     const double centre_yaw = to_centre[3], centre_pitch = to_centre[4] - x[4];
@@ -346,11 +410,12 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       group.bearings.insert(group.bearings.end(), v.bearings.begin(), v.bearings.end());
       group.elevations.insert(group.elevations.end(), v.elevations.begin(), v.elevations.end());
     }
+    // The group's vantages first: with a short budget they are the likelier ones.
+    if (framing.targets().size() > 1) around(framing.centre(), group, nullptr);
     for (const auto& [t, v] : vantages) {
       const Eigen::Vector3d& aim = owner->world().people()[static_cast<std::size_t>(t)].aim;
       around(aim, v, &aim);
     }
-    if (framing.targets().size() > 1) around(framing.centre(), group, nullptr);
   }
   const Aabb& region = shot.region;
   if (candidates.empty()) add(region.centre());  // neither a start nor a global search
@@ -374,7 +439,17 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // 3. Compass search from a candidate, in place.
   const Eigen::Vector3d extent = region.max - region.min;
   const double position_step = std::max(0.05, 0.1 * extent.minCoeff());
-  auto refine = [&](csp::Score& score, Point& x, double scale, double min_step) {
+  // Random poll directions (seeded: a solve is repeatable).
+  std::mt19937_64 poll_rng(context.seed ^ 0x5d0bu);
+  std::uniform_real_distribution<double> poll_unit(-1.0, 1.0);
+  auto keep_best = [&](const csp::Score& score, const Point& x) {
+    if (!score.better_than(best)) return;
+    best = score;
+    best_x = x;
+    budget.note_best(evaluations);
+  };
+  // `polls`: random directions tried when no axis step pays, before the steps halve.
+  auto refine = [&](csp::Score& score, Point& x, double scale, double min_step, int polls = 0) {
     std::array<double, kDims> step{position_step * scale, position_step * scale,
                                    position_step * scale, 4 * scale, 4 * scale,
                                    shot.fov.fixed() ? 0.0 : 4.0 * scale,
@@ -382,6 +457,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     while (!budget.exhausted(evaluations, iterations)) {
       ++iterations;
       bool improved = false;
+      const Point base = x;
       for (int k = 0; k < kDims; ++k) {
         if (step[static_cast<std::size_t>(k)] == 0) continue;
         for (double sign : {1.0, -1.0}) {
@@ -399,11 +475,46 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
           }
         }
       }
-      if (score.better_than(best)) {
-        best = score;
-        best_x = x;
-        budget.note_best(evaluations);
+      // Hooke and Jeeves' pattern move: the sweep's whole move once more, while it pays (a
+      // narrow valley across the axes, as screen positions traded against an angle, is
+      // followed in long strides instead of axis steps).
+      for (Point from = base; improved && !budget.exhausted(evaluations, iterations);) {
+        Point y;
+        for (std::size_t k = 0; k < y.size(); ++k) y[k] = x[k] + (x[k] - from[k]);
+        clamp(y);
+        if (y == x) break;
+        const csp::Score s = framing.score(y);
+        ++evaluations;
+        if (!s.better_than(score)) break;
+        from = x;
+        x = y;
+        score = s;
       }
+      keep_best(score, x);
+      if (improved) continue;
+      // No axis step pays: a few random directions of the same size before the steps halve
+      // (on a ridge between two properties' kinks only a diagonal move gains).
+      for (int d = 0; d < polls && !improved && !budget.exhausted(evaluations, iterations); ++d) {
+        Point y = x, z = x;
+        for (std::size_t k = 0; k < y.size(); ++k) {
+          const double u = step[k] * poll_unit(poll_rng);
+          y[k] += u;
+          z[k] -= u;
+        }
+        for (Point* w : {&y, &z}) {
+          clamp(*w);
+          if (*w == x) continue;
+          const csp::Score s = framing.score(*w);
+          ++evaluations;
+          if (s.better_than(score)) {
+            score = s;
+            x = *w;
+            improved = true;
+            break;
+          }
+        }
+      }
+      keep_best(score, x);
       if (improved) continue;
       double largest = 0;
       for (double& s : step) {
@@ -416,13 +527,17 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // Coarsely (to 5 cm and 0.05 degrees) from each of the best few, then finely from the best.
   const std::size_t keep = std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(options_.keep));
   const double coarse = std::max(options_.min_step, 0.05);
+  // With a time limit, the coarse refinements stop at 70% of it, leaving the best's fine one
+  // the rest.
+  const double coarse_seconds = 0.7 * context.limits.time_limit_seconds;
   for (std::size_t i = 0; i < keep && !budget.exhausted(evaluations, iterations); ++i) {
+    if (i > 0 && coarse_seconds > 0 && budget.elapsed_seconds() > coarse_seconds) break;
     refine(candidates[i].first, candidates[i].second, options_.global ? 1.0 : 0.25, coarse);
   }
   if (!budget.exhausted(evaluations, iterations) && coarse > options_.min_step) {
     csp::Score score = best;
     Point x = best_x;
-    refine(score, x, coarse / position_step * 2, options_.min_step);
+    refine(score, x, coarse / position_step * 2, options_.min_step, options_.global ? 12 : 0);
   }
   // 4. With a budget to use (an anytime run): the other candidates in order (coarsely), then
   // restarts that alternate between the best pose shaken (position by up to a metre, aim by
@@ -459,7 +574,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       clamp(x);
       csp::Score score = framing.score(x);
       ++evaluations;
-      refine(score, x, scale, restart % 2 == 0 ? options_.min_step : coarse);
+      refine(score, x, scale, restart % 2 == 0 ? options_.min_step : coarse, restart % 2 == 0 ? 6 : 0);
     }
   }
   result.best = framing.values(best_x);

@@ -8,12 +8,20 @@
 //      when they ask none), around the group's centre likewise, plus a Halton sample of the
 //      region and the start; each clamped into the region; with two subjects at screen
 //      points, the best exact two-subject pose too (toric_framing.h, on a coarse grid);
+//      The group's vantages come first; with a time limit the candidates stop at 40% of it;
 //   2. at each, the view aims at the targets (their aim points' centre, then a few Newton
 //      steps putting `screen_position` targets at their points), the lens at its mid value;
+//      when someone the shot keeps out is on screen there, the view also turned just enough
+//      to take them off each edge (a group with someone among them may do best giving up
+//      the wanted person on that side);
 //   3. the best few are refined by a compass search in (position, aim offset, fov, roll),
 //      where the aim offset is relative to the targets' direction, so a step of the camera
-//      keeps its framing; steps halve until `min_step`, or the budget ends; with a time
-//      limit the other candidates follow, then restarts from the best pose shaken.
+//      keeps its framing, with Hooke and Jeeves' pattern move; steps halve until
+//      `min_step`, or the budget ends (the coarse refinements stop at 70% of a time limit);
+//      the best's fine refinement also polls random directions before halving (the optimum
+//      of a shot often lies where two properties' ranges end, a ridge no axis step climbs);
+//      with a time limit the other candidates follow, then restarts from the best pose
+//      shaken.
 // Every candidate is scored by the problem itself (csp::Problem::score), so the result is
 // the problem's optimum as far as the search found it, hard constraints first.
 #pragma once
