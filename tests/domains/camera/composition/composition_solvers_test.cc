@@ -3,8 +3,11 @@
 // solver's answer is scored by the independent evaluate() exactly as the problem scores it.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/composition/composition_problem.h"
@@ -89,6 +92,76 @@ TEST(CompositionSolvers, ShotSearchIsDeterministic) {
   auto a = solvers::SolverRegistry::global().create("shot-search")->solve(problem.problem(), {});
   auto b = solvers::SolverRegistry::global().create("shot-search")->solve(problem.problem(), {});
   EXPECT_EQ(a.best, b.best);
+}
+
+// The screen points (FORMATS.md's pinhole, worked here from the definition, not by View) of
+// a box's eight corners; false when one is not in front of the camera.
+bool corners_on_screen(const CameraPose& pose, const Aabb& box, std::vector<Eigen::Vector2d>& out) {
+  const Eigen::Vector3d f = (pose.look_at - pose.position).normalized();
+  const Eigen::Vector3d r = f.cross(Eigen::Vector3d::UnitY()).normalized();
+  const Eigen::Vector3d u = r.cross(f);  // roll 0
+  const double t = std::tan(pose.fov * 3.14159265358979323846 / 360);
+  out.clear();
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d q((c & 1) ? box.max.x() : box.min.x(), (c & 2) ? box.max.y() : box.min.y(),
+                            (c & 4) ? box.max.z() : box.min.z());
+    const Eigen::Vector3d d = q - pose.position;
+    const double z = d.dot(f);
+    if (z <= 0.05) return false;
+    out.emplace_back((1 + d.dot(r) / (z * t * pose.aspect)) / 2, (1 + d.dot(u) / (z * t)) / 2);
+  }
+  return true;
+}
+
+// A group shot of ann, ben and cal with dee, whom the shot keeps out (weight 2), standing in
+// the row between ann and ben: no pose frames the three without dee, so the best gives up
+// ann (satisfaction 4/5 = 0.8), dee off one edge of the image. shot-search's candidates
+// include the view turned just enough to take dee off each edge; without them its compass
+// steps, from views that hold all four, found no way out.
+TEST(CompositionSolvers, ShotSearchGivesUpOnePersonToKeepOutSomeoneAmongThem) {
+  register_composition_solvers(solvers::SolverRegistry::global());
+  const Scene scene = parse_scene(csp::parse_yaml(
+      "name: row\n"
+      "actors:\n"
+      "  - {name: ann, trajectory: [{t: 0, position: [-2, 0, 0], yaw: 0}]}\n"
+      "  - {name: dee, trajectory: [{t: 0, position: [0, 0, 0], yaw: 0}]}\n"
+      "  - {name: ben, trajectory: [{t: 0, position: [2, 0, 0], yaw: 0}]}\n"
+      "  - {name: cal, trajectory: [{t: 0, position: [3, 0, 0], yaw: 0}]}\n"
+      "shot:\n"
+      "  fov: 50\n"
+      "  region: {min: [-6, 1, 3], max: [6, 3, 9]}\n"
+      "  properties:\n"
+      "    - {kind: framed, target: ann}\n"
+      "    - {kind: framed, target: ben}\n"
+      "    - {kind: framed, target: cal}\n"
+      "    - {kind: framed, target: dee, range: [0, 0], weight: 2}\n",
+      "row.yaml"));
+  const CompositionProblem problem(scene, *scene.shot(), 0);
+  solvers::SolveContext context;
+  context.limits.max_evaluations = 1500;
+  const solvers::SolverResult r =
+      solvers::SolverRegistry::global().create("shot-search")->solve(problem.problem(), {}, context);
+  const CameraPose pose = problem.pose(r.best);
+  const ShotEvaluation e = problem.evaluate(pose);
+  EXPECT_NEAR(e.satisfaction, 0.8, 1e-9);
+  // Independently: dee wholly off screen, ben and cal wholly on it.
+  std::vector<Eigen::Vector2d> corners;
+  auto person = [&](const char* name) { return *problem.world().find(name); };
+  const auto& people = problem.world().people();
+  ASSERT_TRUE(corners_on_screen(pose, people[person("ben")].body, corners));
+  for (const auto& c : corners) EXPECT_TRUE(c.minCoeff() >= 0 && c.maxCoeff() <= 1);
+  ASSERT_TRUE(corners_on_screen(pose, people[person("cal")].body, corners));
+  for (const auto& c : corners) EXPECT_TRUE(c.minCoeff() >= 0 && c.maxCoeff() <= 1);
+  if (corners_on_screen(pose, people[person("dee")].body, corners)) {
+    bool left = true, right = true, below = true, above = true;
+    for (const auto& c : corners) {
+      left = left && c.x() < 0;
+      right = right && c.x() > 1;
+      below = below && c.y() < 0;
+      above = above && c.y() > 1;
+    }
+    EXPECT_TRUE(left || right || below || above);
+  }
 }
 
 }  // namespace
