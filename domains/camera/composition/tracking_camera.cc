@@ -37,6 +37,22 @@ Shot working_shot(const Shot& shot, const std::vector<std::string>& wanted) {
   return out;
 }
 
+// The shot the poses are solved for: each soft `visible` property of someone wanted asks
+// at least `share` of the samples (within its range), so that the pose aimed for keeps
+// people in view with room to spare while pillars and passers-by come near and while the
+// camera lags behind it; what a pose keeps or loses is still judged by the shot itself.
+// Working to the shot's own ranges, the aimed-for pose sat where the last sample it needed
+// was just visible or just framed, and lost someone at the next small change.
+Shot asking_more_visible(const Shot& shot, double share) {
+  Shot out = shot;
+  for (ShotProperty& p : out.properties) {
+    if (p.kind == "visible" && !p.hard && p.range.hi > 0) {
+      p.range.lo = std::max(p.range.lo, std::min(p.range.hi, share));
+    }
+  }
+  return out;
+}
+
 // The names of the people `problem` wants in the image.
 std::vector<std::string> wanted_names(const CompositionProblem& problem) {
   std::vector<std::string> out;
@@ -51,8 +67,10 @@ TrackingCamera::TrackingCamera(const Scene& scene, TrackingOptions options)
       options_(std::move(options)),
       verdict_(scene, shot_of(scene), scene.trajectory().start_time()),
       shot_(working_shot(shot_of(scene), wanted_names(verdict_))),
+      aimed_shot_(asking_more_visible(shot_, options_.visible_aim)),
       problem_(scene, shot_, scene.trajectory().start_time()),
-      ahead_(scene, shot_, scene.trajectory().start_time(), options_.foresight) {
+      refine_(scene, aimed_shot_, scene.trajectory().start_time()),
+      ahead_(scene, aimed_shot_, scene.trajectory().start_time(), options_.foresight) {
   solvers::SolverRegistry& registry = solvers::SolverRegistry::global();
   register_composition_solvers(registry);
   global_ = registry.create(options_.solver);
@@ -63,7 +81,8 @@ TrackingCamera::TrackingCamera(const Scene& scene, TrackingOptions options)
   // The sweep's share of a frame is in people looked at: fewer candidates with more people.
   sweep_count_ = static_cast<std::size_t>(std::max<std::int64_t>(
       4, options_.sweep_people_per_frame / static_cast<std::int64_t>(problem_.wanted().size())));
-  local_context_.limits.max_evaluations = options_.frame_evaluations;
+  local_context_.limits.max_evaluations = static_cast<std::uint64_t>(std::max<std::int64_t>(
+      30, options_.frame_people_evaluations / static_cast<std::int64_t>(problem_.wanted().size())));
   local_context_.want_breakdown = false;
   local_context_.anytime = false;
   local_context_.seed = options_.seed;
@@ -182,6 +201,16 @@ void TrackingCamera::move_toward(double dt) {
   Eigen::Vector3d step = k * (filtered_.position - pose_.position);
   const double limit = 0.98 * max_step(dt);
   if (step.norm() > limit) step *= limit / step.norm();
+  // Never into the shot's clearance: the step, else half of it, else none (the smoothed path
+  // cuts corners the aimed-for poses keep clear of), unless each of them is inside it.
+  verdict_.set_time(t_);
+  const double clearance = shot_.clearance;
+  for (double scale : {1.0, 0.5, 0.0}) {
+    if (verdict_.world().clearance(pose_.position + scale * step, clearance) >= clearance) {
+      step *= scale;
+      break;
+    }
+  }
   const Eigen::Vector3d new_position = pose_.position + step;
   const Eigen::Vector3d old_dir = (pose_.look_at - pose_.position).normalized();
   const Eigen::Vector3d dir = (old_dir + k * (filtered_.look_at - old_dir)).normalized();
@@ -205,6 +234,7 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
   if (!started_) {
     // The first frame: a global solve from nowhere, and the camera starts there.
     problem_.set_time(t_);
+    refine_.set_time(t_);
     ahead_.set_time(t_);
     aim_ = problem_.assignment(pose_);
     solve_globally(options_.resolve_evaluations * 5);
@@ -216,9 +246,10 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     // (the two stages lag about 2 x smoothing), forecast from their velocities; a slice of
     // the background sweep is scored there too.
     problem_.set_time(t_, options_.lead_seconds);
+    refine_.set_time(t_, options_.lead_seconds);
     ahead_.set_time(t_, options_.lead_seconds);
     sweep_slice(sweep_count_);
-    local_->solve_into(problem_.problem(), aim_, local_context_, result_);
+    local_->solve_into(refine_.problem(), aim_, local_context_, result_);
     aim_ = result_.best;
     problem_.evaluate_into(problem_.pose(aim_), aimed_);
     // When the aimed-for pose breaks a rule: a global solve. When it loses someone or falls

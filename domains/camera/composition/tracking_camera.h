@@ -6,6 +6,11 @@
 // each person the shot wants in the image and names in no visible property: a person framed
 // but hidden behind someone else is not in the shot.
 //
+// The poses are solved for that shot asking more of it: each wanted person's soft
+// `visible` range raised to `visible_aim` of the samples (all, by default), so the pose aimed
+// for keeps a margin against occluders and the camera's lag; whether a pose keeps or loses
+// someone (for the global solves and the cuts) is judged by the shot worked to.
+//
 // Each frame: the shot's problem is set to where the people will be `lead_seconds` on
 // (their positions and velocities now: a forecast, as a game would make); the pose the
 // camera aims for is refined from the last one (shot-search without its global phase, a
@@ -25,7 +30,8 @@
 // pay for a whole global solve. The
 // camera follows the aimed-for pose through two first-order stages (the aimed-for pose
 // low-passed, then a spring toward that; time constant `smoothing` each), bounded by
-// max_speed; the look direction, fov and roll alike. When the camera's own pose breaks the shot while the aimed-for pose keeps it
+// max_speed; the look direction, fov and roll alike; a step that would end inside the
+// shot's clearance is halved, else not taken. When the camera's own pose breaks the shot while the aimed-for pose keeps it
 // and is out of one frame's smooth reach, it cuts there, never twice within
 // `min_shot_seconds`. Once warm, a frame allocates nothing.
 #pragma once
@@ -43,7 +49,9 @@ struct TrackingOptions {
   std::string solver = "shot-search";   // the global solve (any composition solver)
   // Budgets in evaluations of the shot, not seconds, so a run is the same on any machine
   // under any load (about 2 us each with four people among boxes).
-  std::uint64_t frame_evaluations = 60;     // the per-frame local refinement
+  // The per-frame local refinement's evaluations: this over the number of people the shot
+  // wants (60 with two, 30 with four), at least 30.
+  std::int64_t frame_people_evaluations = 120;
   std::uint64_t resolve_evaluations = 250;  // a global solve (a broken rule)
   // Sweep candidates scored each frame: this over the number of people the shot wants (32:
   // 16 candidates with two people, 8 with four), at least 4.
@@ -54,6 +62,10 @@ struct TrackingOptions {
   double smoothing = 0.15;               // s: each of the two stages' time constant
   double min_shot_seconds = 1.0;         // never two cuts closer than this
   double lead_seconds = 0.3;             // the aimed-for pose is solved this far ahead
+  // The poses are solved asking at least this share of each wanted person's samples
+  // visible (each soft `visible` range's low end raised to it, within the range; see
+  // asking_more_visible in the .cc); what a pose keeps or loses is judged by the shot.
+  double visible_aim = 1.0;
   // A global solve also keeps the shot's people framed and visible this far beyond the
   // lead, the camera carried along with them (CompositionProblem's foresight).
   Foresight foresight{{0.5, 1.0}, 1.0};
@@ -91,8 +103,10 @@ class TrackingCamera : public CameraController {
   TrackingOptions options_;
   CompositionProblem verdict_;   // the scene's own shot: FORMATS.md's verdict
   Shot shot_;                    // the shot worked to (see working_shot in the .cc)
-  CompositionProblem problem_;   // shot_ now: the per-frame refinement
-  CompositionProblem ahead_;     // shot_ with foresight: the sweep and the global solves
+  Shot aimed_shot_;              // shot_ with margins: the shot the poses are solved for
+  CompositionProblem problem_;   // shot_ now: what a pose keeps or loses
+  CompositionProblem refine_;    // aimed_shot_ now: the per-frame refinement
+  CompositionProblem ahead_;     // aimed_shot_ with foresight: the sweep and the global solves
   std::unique_ptr<solvers::Solver> local_, global_;
   solvers::SolveContext local_context_, global_context_;
   solvers::SolverResult result_;
