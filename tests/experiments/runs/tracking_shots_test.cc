@@ -44,7 +44,8 @@ TEST(TrackingShots, EveryShippedShotSceneIsFilmedSmoothlyWithinTheShotsRules) {
     for (const PersonShown& p : run.shot->people) std::printf(" %s %.1f%%", p.name.c_str(), p.shown_percent);
     std::printf("; satisfaction mean %.3f p10 %.3f; %d cuts\n", run.shot->satisfaction_mean,
                 run.shot->satisfaction_p10, m.cuts);
-    EXPECT_GT(run.shot->shown_percent_min, 50) << path;
+    // The target: every person the shot names shown in at least 99% of frames.
+    EXPECT_GE(run.shot->shown_percent_min, 99) << path;
     // The engines' group camera on the same scene, for the record.
     camera::ChaseCameraOptions group;
     group.solver = "group-framing";
@@ -60,7 +61,8 @@ TEST(TrackingShots, EveryShippedShotSceneIsFilmedSmoothlyWithinTheShotsRules) {
 // columns with vehicles, chases round corners, crossings, circling), shots nobody tuned the
 // camera for: smooth (no unflagged jump, no two cuts within 1 s), within the shot's region
 // and clearance almost always, and the people shown (independent check) -- printed per seed,
-// with the family's mean, median and worst least-shown person as a floor against regressions.
+// with the family's mean, median and worst least-shown person as a floor against regressions
+// (2026-11-27: 99.4, 100 and 95.3; the 99% is met on 13 of these 16).
 TEST(TrackingShots, GeneratedTrackingShotsAreFilmedSmoothlyAndKeepThePeopleShown) {
   std::vector<double> least;
   for (std::uint64_t seed = 1; seed <= 16; ++seed) {
@@ -87,8 +89,9 @@ TEST(TrackingShots, GeneratedTrackingShotsAreFilmedSmoothlyAndKeepThePeopleShown
   for (double v : least) sum += v;
   const double mean = sum / static_cast<double>(least.size()), median = least[least.size() / 2];
   std::printf("least-shown person: mean %.1f%%, median %.1f%%, worst %.1f%%\n", mean, median, least.front());
-  EXPECT_GE(median, 95);
-  EXPECT_GE(mean, 90);
+  EXPECT_GE(median, 99);
+  EXPECT_GE(mean, 98);
+  EXPECT_GE(least.front(), 90);
 }
 
 TEST(TrackingShots, TheIndependentCheckAgreesWithTheShotsVisibleMeasure) {
