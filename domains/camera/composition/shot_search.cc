@@ -132,9 +132,10 @@ class Framing {
       }
     }
     if (shift == 0) return false;
-    // Screen units to degrees near the image's centre: 1 unit is 2 tan(fov/2) (x aspect).
-    // A larger yaw turns the view left (points move right); a larger pitch looks up
-    // (points move down).
+    // Screen units to degrees, roughly: one unit is the angle the image spans on that axis.
+    // A larger yaw turns the view left (points move right); a larger pitch looks up (points
+    // move down). With a roll the axes turn too: the candidate is only a guess, and the
+    // problem's score decides whether it is kept.
     const double tan_half = std::tan(x[5] * kRadians / 2) * (axis == 0 ? owner_->shot().aspect : 1.0);
     const double degrees = 2 * std::atan(tan_half) * kDegrees * shift;
     if (axis == 0) {
