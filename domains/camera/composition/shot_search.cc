@@ -107,35 +107,45 @@ class Framing {
   }
   csp::Score score(const Point& x) { return problem_->score(values(x)); }
 
-  // The aim of x turned just enough to take the people the shot keeps out who are on
-  // screen at x off one edge of the image (`side`: 0 left, 1 right, 2 bottom, 3 top), their
-  // bodies' corners `beyond` screen units past it: a group's shot with someone standing
-  // among them may do best giving up a wanted person on that side. False when no one kept
-  // out is on screen, or when a corner of theirs is behind the camera.
-  bool turn_away(Point& x, int side, double beyond) {
+  // How far (screen units, > 0) the view at x must turn to take the people the shot keeps
+  // out who are on screen there off each edge of the image (0 left, 1 right, 2 bottom,
+  // 3 top), their bodies' corners `beyond` screen units past it: a group's shot with someone
+  // standing among them may do best giving up a wanted person on that side. False when no
+  // one kept out is on screen, or when a corner of theirs is behind the camera.
+  bool shifts_away(const Point& x, double beyond, std::array<double, 4>& shift) {
     const std::optional<View> view = View::of(owner_->pose(values(x)));
     if (!view) return false;
     const auto& people = owner_->world().people();
-    const int axis = side / 2;
-    double shift = 0;  // screen units along the axis, toward the side (> 0)
+    shift.fill(0);
+    bool any = false;
     for (int e : excluded_) {
       const PersonAtTime& person = people[static_cast<std::size_t>(e)];
       const std::optional<Eigen::Vector2d> s = view->project(person.aim);
       if (!s || s->minCoeff() <= 0 || s->maxCoeff() >= 1) continue;
+      any = true;
       for (int c = 0; c < 8; ++c) {
         const Eigen::Vector3d corner((c & 1) ? person.body.max.x() : person.body.min.x(),
                                      (c & 2) ? person.body.max.y() : person.body.min.y(),
                                      (c & 4) ? person.body.max.z() : person.body.min.z());
         const std::optional<Eigen::Vector2d> q = view->project(corner);
         if (!q) return false;
-        shift = std::max(shift, side % 2 == 0 ? (*q)[axis] + beyond : 1 + beyond - (*q)[axis]);
+        for (int side = 0; side < 4; ++side) {
+          const double at = (*q)[side / 2];
+          shift[static_cast<std::size_t>(side)] = std::max(
+              shift[static_cast<std::size_t>(side)], side % 2 == 0 ? at + beyond : 1 + beyond - at);
+        }
       }
     }
-    if (shift == 0) return false;
-    // Screen units to degrees, roughly: one unit is the angle the image spans on that axis.
-    // A larger yaw turns the view left (points move right); a larger pitch looks up (points
-    // move down). With a roll the axes turn too: the candidate is only a guess, and the
-    // problem's score decides whether it is kept.
+    return any;
+  }
+
+  // x's aim turned by `shift` screen units toward `side` (see shifts_away). Screen units to
+  // degrees, roughly: one unit is the angle the image spans on that axis. A larger yaw turns
+  // the view left (points move right); a larger pitch looks up (points move down). With a
+  // roll the axes turn too: the candidate is only a guess, and the problem's score decides
+  // whether it is kept.
+  void turn(Point& x, int side, double shift) const {
+    const int axis = side / 2;
     const double tan_half = std::tan(x[5] * kRadians / 2) * (axis == 0 ? owner_->shot().aspect : 1.0);
     const double degrees = 2 * std::atan(tan_half) * kDegrees * shift;
     if (axis == 0) {
@@ -143,7 +153,6 @@ class Framing {
     } else {
       x[4] += side == 2 ? degrees : -degrees;
     }
-    return true;
   }
 
   // Aim offsets that put the screen_position targets at their points (a few Newton steps
@@ -318,13 +327,15 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     framing.aim(x);
     candidates.emplace_back(framing.score(x), x);
     ++evaluations;
-    // Someone the shot keeps out on screen: the view turned to each side that can take
-    // them off it.
-    for (int side = 0; side < 4; ++side) {
-      Point y = x;
-      if (candidates_done() || !framing.turn_away(y, side, 0.02)) continue;
-      candidates.emplace_back(framing.score(y), y);
-      ++evaluations;
+    // Someone the shot keeps out on screen: the view turned to each side to take them off it.
+    std::array<double, 4> shift{};
+    if (framing.shifts_away(x, 0.02, shift)) {
+      for (int side = 0; side < 4 && !candidates_done(); ++side) {
+        Point y = x;
+        framing.turn(y, side, shift[static_cast<std::size_t>(side)]);
+        candidates.emplace_back(framing.score(y), y);
+        ++evaluations;
+      }
     }
     if (subject == nullptr || framing.targets().size() < 2) return;
     const csp::Assignment& to_centre = framing.values(x);

@@ -202,8 +202,8 @@ void TrackingCamera::move_toward(double dt) {
   const double limit = 0.98 * max_step(dt);
   if (step.norm() > limit) step *= limit / step.norm();
   // Never into the shot's clearance: the step, else half of it, else none (the smoothed path
-  // cuts corners the aimed-for poses keep clear of), unless each of them is inside it.
-  verdict_.set_time(t_);
+  // cuts corners the aimed-for poses keep clear of), unless each of them is inside it
+  // (verdict_ is at the frame's time: update() sets it first).
   const double clearance = shot_.clearance;
   for (double scale : {1.0, 0.5, 0.0}) {
     if (verdict_.world().clearance(pose_.position + scale * step, clearance) >= clearance) {
@@ -229,6 +229,7 @@ void TrackingCamera::jump_to_aim() {
 const CameraFrame& TrackingCamera::update(const CharacterState& character, double dt) {
   const auto began = std::chrono::steady_clock::now();
   t_ = character.t;
+  verdict_.set_time(t_);  // the people now: the verdict and move_toward's clearance
   frame_.cut = false;
   frame_.cut_reason = CutReason::kNone;
   if (!started_) {
@@ -290,7 +291,6 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
     }
   }
   // FORMATS.md's verdict on the pose, for the frame and evaluation().
-  verdict_.set_time(t_);
   verdict_.evaluate_into(pose_, evaluation_);
   fill_frame(problem_, pose_, evaluation_.feasible, problem_.pose(aim_).position, frame_);
   frame_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
