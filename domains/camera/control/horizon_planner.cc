@@ -202,8 +202,21 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
           : std::nullopt;
 
   // Offsets from the target (index kStop: the smooth stop, goal computed below; kTrail:
-  // the trail's waypoint).
-  constexpr int kStop = kCandidates - 1, kTrail = kCandidates - 2, kChase = kCandidates - 3;
+  // the trail's waypoint; kChase: the chase on her trail; kIdeal: the ideal shot).
+  constexpr int kStop = kCandidates - 1, kTrail = kCandidates - 2, kChase = kCandidates - 3,
+                kIdeal = kCandidates - 4;
+  // The ideal shot, moving as it has been moving (its velocity low-passed, at most
+  // max_speed), offered while it has room and sees her look-at point.
+  if (has_ideal_ && dt > 0) {
+    const double w = std::min(1.0, dt / kIdealSmoothing);
+    ideal_velocity_ += w * ((ideal - last_ideal_) / dt - ideal_velocity_);
+    if (ideal_velocity_.norm() > max_speed_) ideal_velocity_ *= max_speed_ / ideal_velocity_.norm();
+  }
+  last_ideal_ = ideal;
+  has_ideal_ = true;
+  const bool ideal_open = has_room(problem_->scene_at_time(), ideal,
+                                   problem_->profile().clearance_radius) &&
+                          problem_->scene_at_time().line_of_sight(ideal, look);
   std::array<Eigen::Vector3d, kCandidates> offsets = {
       Eigen::Vector3d::Zero(),
       previous_offset_,
@@ -215,6 +228,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       -1.5 * side,
       up + 1.5 * side,
       up - 1.5 * side,
+      Eigen::Vector3d(ideal - target),
       chase ? Eigen::Vector3d(*chase - target) : Eigen::Vector3d::Zero(),
       waypoint ? Eigen::Vector3d(*waypoint - target) : Eigen::Vector3d::Zero(),
       Eigen::Vector3d::Zero()};
@@ -225,11 +239,13 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     if (i == kStop) return now.position + 0.5 * plan_seconds_ * now.velocity;
     if (i == kTrail) return *waypoint + ahead * trail_velocity;  // on along her path
     if (i == kChase) return *chase + ahead * chase_velocity;
+    if (i == kIdeal) return ideal + ahead * ideal_velocity_;
     return target + offsets[static_cast<std::size_t>(i)] + ahead * target_velocity;
   };
   auto velocity_of = [&](int i) -> Eigen::Vector3d {
     if (i == kTrail) return trail_velocity;
     if (i == kChase) return chase_velocity;
+    if (i == kIdeal) return ideal_velocity_;
     return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
   };
   const csp::Problem& problem = problem_->problem();
@@ -250,7 +266,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     const auto u = static_cast<std::size_t>(i);
     // A duplicate of the target (previous choice was the target itself) is skipped.
     if ((i == 1 && previous_offset_.squaredNorm() < 1e-12) || (i == kTrail && !waypoint) ||
-        (i == kChase && !chase)) {
+        (i == kChase && !chase) || (i == kIdeal && !ideal_open)) {
       cheap[u] = std::numeric_limits<double>::infinity();
       continue;
     }
