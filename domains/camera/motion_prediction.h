@@ -23,8 +23,8 @@
 //     further at her (unclamped) turn rate, at most 90 degrees, and on straight from there
 //     (a turn on the spot ends within a fraction of a second). A camera told only that she
 //     stands saw her walk off round a doorway's edge 0.2-0.4 s later: on 144 walks of 36
-//     Quake III maps (none of them tuned on) the forecast took the default camera's cuts
-//     from 80 to 67.
+//     Quake III maps never tuned on the forecast took the default camera's cuts from 80 to
+//     67 (docs/CAMERA.md, "Anticipation").
 //   lookahead: path reads the future: the trajectory at t + ahead_k and the movers'
 //     keyframes at that time (scripted sequences, characters on a planned path).
 //   lookahead: none predicts nothing (size() is 0).
