@@ -4,7 +4,7 @@
 // frames never enter a wall's clearance nor lose the look-at point (judged with the test's
 // own box geometry, not the planner's queries); when no first frame keeps the look-at point,
 // it says whether a plan sees it again by the first predicted sample (a mover gone past) or
-// not (a shut door).
+// not (a shut door); it follows the ideal shot where the target lags it, never into a wall.
 //
 // This executable replaces the global operator new with one that counts, which is why it is
 // a test program of its own.
@@ -191,6 +191,48 @@ TEST(HorizonPlanner, BrakesBeforeASideWallItIsMovingAt) {
     state = *next;
   }
   EXPECT_EQ(planned, 120);  // it brakes in time, so every frame has a plan
+}
+
+TEST(HorizonPlanner, FollowsTheIdealShotWhereTheTargetLagsAndNotIntoAWall) {
+  // A character walking along +z at 3 m/s on open ground; the target handed to the planner
+  // stays where the camera started (a solver's target that lags). The ideal shot is a
+  // candidate while it is open: after 3 s the camera is within 0.5 m of it (known answer:
+  // 4 m behind her, 2.5 m up). Then the same with a wall across her path's far end, where
+  // the ideal shot would be inside it after she passes: the camera never enters the wall's
+  // clearance (judged with the test's own box distance).
+  for (const bool wall : {false, true}) {
+    const Vector3d lo(-3, 0, 4.5), hi(3, 3, 5.5);
+    std::vector<SolidBox> solids;
+    if (wall) solids.push_back({"wall", {lo, hi}, {}});
+    // Open ground: walks 0 -> 9 m. With the wall: starts past it, at z = 6.5, so the
+    // ideal shot (4 m behind) starts inside the wall and never leaves its far side open.
+    const double z0 = wall ? 6.5 : 0;
+    Scene scene("lag", std::move(solids), {}, {},
+                Trajectory({{0, {0, 0, z0}, 0}, {3, {0, 0, z0 + 9}, 0}}));
+    const CameraProfile profile = preset_profile("anticipating");  // kept by pointer
+    CameraProblem cp(scene, profile);
+    HorizonPlanner planner(cp, framing_ids(cp), 12.0, 15.0, 0.75);
+    const double dt = 1.0 / 60;
+    const Vector3d start = wall ? Vector3d(0, 2.5, z0 + 1.0) : Vector3d(0, 2.5, z0 - 4);
+    HorizonPlanner::State state{start, Vector3d::Zero(), Vector3d::Zero()};
+    const double r = cp.profile().clearance_radius;
+    for (int frame = 0; frame <= 180; ++frame) {
+      const CharacterState c = scene.character_at(frame * dt);
+      cp.set_frame(c, state.position, dt);
+      const Vector3d look = scene.character().look_at(c.position);
+      const auto next = planner.plan(state, start, Vector3d::Zero(), look, dt);
+      ASSERT_TRUE(next.has_value()) << "frame " << frame;
+      if (wall) {
+        EXPECT_GE(distance_to_box(next->position, lo, hi), r - 1e-9) << "frame " << frame;
+      }
+      state = *next;
+    }
+    const CharacterState end = scene.character_at(3);
+    cp.set_frame(end, state.position, dt);
+    if (!wall) {
+      EXPECT_LT((state.position - cp.ideal_position()).norm(), 0.5);
+    }
+  }
 }
 
 }  // namespace
