@@ -45,9 +45,10 @@ void MotionPrediction::update(const CharacterState& character) {
   if (geometry_.empty()) return;
   if (started_ && character.t == last_t_) return;  // the same frame again
   const double since = character.t - last_t_;
-  turn_rate_ = spin_rate_ = 0;
+  turn_rate_ = spin_rate_ = last_turn_ = 0;
   if (started_ && since > 0 && since <= kMaxRateInterval) {
-    spin_rate_ = shortest_turn(last_yaw_, character.yaw) / since;
+    last_turn_ = shortest_turn(last_yaw_, character.yaw);
+    spin_rate_ = last_turn_ / since;
     turn_rate_ = std::clamp(spin_rate_, -kMaxTurnRate, kMaxTurnRate);
   }
   started_ = true;
@@ -89,7 +90,10 @@ void MotionPrediction::predict_motion(const CharacterState& character) {
   double rate = turn_rate_;
   if (std::hypot(v.x(), v.z()) < kStillSpeed && std::abs(spin_rate_) >= kSetOffTurnRate &&
       character.t - moved_at_ <= kPaceMemory) {  // setting off (see the header)
-    const double lead = std::clamp(spin_rate_ * kSetOffLead, -90.0, 90.0);
+    // A facing snapped in one frame is where she turned to: no lead.
+    const double lead = std::abs(last_turn_) >= kSnapTurn
+                            ? 0.0
+                            : std::clamp(spin_rate_ * kSetOffLead, -90.0, 90.0);
     v = moving_pace_ * turned(character.facing(), lead) + Eigen::Vector3d(0, v.y(), 0);
     rate = 0;
   }

@@ -20,7 +20,8 @@
 //     Turning on the spot after walking (standing, turning faster than kSetOffTurnRate,
 //     within kPaceMemory seconds of last moving) she is about to set off: the forecast
 //     starts her at her last walking pace along her facing turned kSetOffLead seconds
-//     further at her (unclamped) turn rate, at most 90 degrees, and on straight from there
+//     further at her (unclamped) turn rate, at most 90 degrees (none after a snap: kSnapTurn
+//     or more in one frame is a facing set, not a turn going on), and on straight from there
 //     (a turn on the spot ends within a fraction of a second). A camera told only that she
 //     stands saw her walk off round a doorway's edge 0.2-0.4 s later: on 144 walks of 36
 //     Quake III maps never tuned on the forecast took the default camera's cuts from 80 to
@@ -63,6 +64,8 @@ class MotionPrediction {
   static constexpr double kSetOffTurnRate = 60.0;
   static constexpr double kPaceMemory = 3.0;
   static constexpr double kSetOffLead = 0.1;
+  // Degrees turned between two frames from which the facing counts as snapped.
+  static constexpr double kSnapTurn = 45.0;
 
   struct Sample {
     double ahead = 0;  // seconds after the frame's time
@@ -106,6 +109,7 @@ class MotionPrediction {
   double last_yaw_ = 0;
   double turn_rate_ = 0;
   double spin_rate_ = 0;     // the same, unclamped
+  double last_turn_ = 0;     // degrees turned since the previous frame
   double moving_pace_ = 0;   // her horizontal speed when she last moved (m/s), and when
   double moved_at_ = -1e9;
 };

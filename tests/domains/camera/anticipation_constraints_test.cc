@@ -140,11 +140,19 @@ TEST(MotionPrediction, SetsOffTheWaySheFacesWhenSheTurnsOnTheSpotAfterWalking) {
     }
   }
   {
-    MotionPrediction p(open, a);  // a snap of 60 degrees in 1/60 s: 3600 deg/s, lead 90 at most
+    MotionPrediction p(open, a);  // 20 degrees in 1/60 s: 1200 deg/s, a lead of 90 at most
+    p.update(state(0, {0, 0, 0}, 0, {0, 0, 2}));
+    p.update(state(1.0, at, 100, Vector3d::Zero()));
+    p.update(state(1.0 + 1.0 / 60, at, 80, Vector3d::Zero()));
+    const Vector3d end = look + 2 * a.horizon * facing_from_yaw(350);
+    EXPECT_LT((p.sample(p.size() - 1).look_at - end).norm(), 1e-9);
+  }
+  {
+    MotionPrediction p(open, a);  // a snap: 60 degrees in one frame, set off as she now faces
     p.update(state(0, {0, 0, 0}, 0, {0, 0, 2}));
     p.update(state(1.0, at, 200, Vector3d::Zero()));
     p.update(state(1.0 + 1.0 / 60, at, 140, Vector3d::Zero()));
-    const Vector3d end = look + 2 * a.horizon * facing_from_yaw(50);
+    const Vector3d end = look + 2 * a.horizon * facing_from_yaw(140);
     EXPECT_LT((p.sample(p.size() - 1).look_at - end).norm(), 1e-9);
   }
   {
