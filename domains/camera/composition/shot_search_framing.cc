@@ -1,0 +1,185 @@
+#include "sightline/domains/camera/composition/shot_search_framing.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace sightline::camera::shot_search_detail {
+
+namespace {
+
+double mid(const ValueRange& r, double fallback) {
+  if (std::isfinite(r.lo) && std::isfinite(r.hi)) return (r.lo + r.hi) / 2;
+  if (std::isfinite(r.lo)) return r.lo > 0 ? r.lo * 1.25 : r.lo + fallback;
+  if (std::isfinite(r.hi)) return r.hi * 0.8;
+  return fallback;
+}
+
+}  // namespace
+
+Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
+                 std::vector<int>& targets, std::vector<int>& excluded, csp::Assignment& values)
+    : problem_(&problem), owner_(&owner), targets_(targets), excluded_(excluded), values_(values) {
+  const auto& people = owner.world().people();
+  targets_ = owner.wanted();
+  excluded_.clear();
+  for (const std::vector<int>& ts : owner.targets()) {
+    for (int t : ts) {
+      if (std::find(targets_.begin(), targets_.end(), t) == targets_.end() &&
+          std::find(excluded_.begin(), excluded_.end(), t) == excluded_.end()) {
+        excluded_.push_back(t);
+      }
+    }
+  }
+  centre_.setZero();
+  for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
+  centre_ /= static_cast<double>(std::max<std::size_t>(1, targets_.size()));
+  values_.resize(kDims);
+}
+
+const csp::Assignment& Framing::values(const Point& x) {
+  const Eigen::Vector3d d = centre_ - Eigen::Vector3d(x[0], x[1], x[2]);
+  const double yaw = std::atan2(d.x(), d.z()) * kDegrees;
+  const double pitch = std::atan2(d.y(), std::hypot(d.x(), d.z())) * kDegrees;
+  values_[0] = x[0];
+  values_[1] = x[1];
+  values_[2] = x[2];
+  values_[3] = signed_degrees(yaw + x[3]);
+  values_[4] = std::clamp(pitch + x[4], -89.0, 89.0);
+  values_[5] = x[5];
+  values_[6] = x[6];
+  return values_;
+}
+
+bool Framing::shifts_away(const Point& x, double beyond, std::array<double, 4>& shift) {
+  const std::optional<View> view = View::of(owner_->pose(values(x)));
+  if (!view) return false;
+  const auto& people = owner_->world().people();
+  shift.fill(0);
+  bool any = false;
+  for (int e : excluded_) {
+    const PersonAtTime& person = people[static_cast<std::size_t>(e)];
+    const std::optional<Eigen::Vector2d> s = view->project(person.aim);
+    if (!s || s->minCoeff() <= 0 || s->maxCoeff() >= 1) continue;
+    any = true;
+    for (int c = 0; c < 8; ++c) {
+      const Eigen::Vector3d corner((c & 1) ? person.body.max.x() : person.body.min.x(),
+                                   (c & 2) ? person.body.max.y() : person.body.min.y(),
+                                   (c & 4) ? person.body.max.z() : person.body.min.z());
+      const std::optional<Eigen::Vector2d> q = view->project(corner);
+      if (!q) return false;
+      for (int side = 0; side < 4; ++side) {
+        const double at = (*q)[side / 2];
+        shift[static_cast<std::size_t>(side)] = std::max(
+            shift[static_cast<std::size_t>(side)], side % 2 == 0 ? at + beyond : 1 + beyond - at);
+      }
+    }
+  }
+  return any;
+}
+
+void Framing::turn(Point& x, int side, double shift) const {
+  const int axis = side / 2;
+  const double tan_half = std::tan(x[5] * kRadians / 2) * (axis == 0 ? owner_->shot().aspect : 1.0);
+  const double degrees = 2 * std::atan(tan_half) * kDegrees * shift;
+  if (axis == 0) {
+    x[3] += side == 0 ? -degrees : degrees;
+  } else {
+    x[4] += side == 2 ? degrees : -degrees;
+  }
+}
+
+void Framing::aim(Point& x) {
+  x[3] = x[4] = 0;
+  const Shot& shot = owner_->shot();
+  bool any = false;
+  for (const ShotProperty& p : shot.properties) any = any || p.kind == "screen_position";
+  if (!any) return;
+  for (int step = 0; step < 6; ++step) {
+    Eigen::Vector2d r0;
+    if (!error(x, r0)) return;
+    if (r0.norm() < 1e-4) return;
+    Eigen::Matrix2d j;
+    constexpr double h = 0.25;
+    for (int k = 0; k < 2; ++k) {
+      Point y = x;
+      y[3 + k] += h;
+      Eigen::Vector2d r1;
+      if (!error(y, r1)) return;
+      j.col(k) = (r1 - r0) / h;
+    }
+    if (std::abs(j.determinant()) < 1e-12) return;
+    const Eigen::Vector2d delta = j.inverse() * r0;
+    x[3] -= std::clamp(delta.x(), -30.0, 30.0);
+    x[4] -= std::clamp(delta.y(), -30.0, 30.0);
+  }
+}
+
+bool Framing::error(const Point& x, Eigen::Vector2d& out) {
+  const std::optional<View> view = View::of(owner_->pose(values(x)));
+  if (!view) return false;
+  out.setZero();
+  int n = 0;
+  const Shot& shot = owner_->shot();
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const ShotProperty& p = shot.properties[i];
+    if (p.kind != "screen_position") continue;
+    const auto& person = owner_->world().people()[static_cast<std::size_t>(owner_->targets()[i][0])];
+    const std::optional<Eigen::Vector2d> s = view->project(person.aim);
+    if (!s) return false;
+    out += *s - p.at;
+    ++n;
+  }
+  out /= std::max(1, n);
+  return true;
+}
+
+void vantage_into(const CompositionProblem& owner, int t, double fov, Vantage& v) {
+  const Shot& shot = owner.shot();
+  const PersonAtTime& person = owner.world().people()[static_cast<std::size_t>(t)];
+  v.distance = 4;
+  v.bearings.clear();
+  v.elevations.clear();
+  const double tan_half = std::tan(fov * kRadians / 2);
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    const ShotProperty& p = shot.properties[i];
+    if (owner.targets()[i].size() != 1 || owner.targets()[i][0] != t) continue;
+    if (p.kind == "distance") {
+      v.distance = mid(p.range, 4);
+    } else if (p.kind == "size") {
+      const Eigen::Vector3d size = person.body.size();
+      const double wanted = mid(p.range, 0.3);
+      if (!(wanted > 0)) continue;
+      double extent = size.y(), image = 2 * tan_half;  // height: image height at depth 1
+      if (p.measure == "width") {
+        extent = std::max(size.x(), size.z());
+        image = 2 * tan_half * shot.aspect;
+      } else if (p.measure == "area") {
+        extent = std::sqrt(size.y() * std::max(size.x(), size.z()));
+        image = 2 * tan_half * std::sqrt(shot.aspect);
+      }
+      const double fraction = p.measure == "area" ? std::sqrt(wanted) : wanted;
+      v.distance = extent / (image * fraction);
+    } else if (p.kind == "angle_horizontal") {
+      v.bearings.push_back(person.yaw + arc_middle(p.range));
+    } else if (p.kind == "angle_vertical") {
+      // Its middle, and near both ends when they are finite (a group often fits at one end).
+      const double m = mid(p.range, 10);
+      v.elevations.push_back(m);
+      if (std::isfinite(p.range.lo) && std::isfinite(p.range.hi) && p.range.hi > p.range.lo) {
+        const double span = p.range.hi - p.range.lo;
+        v.elevations.push_back(std::clamp(p.range.lo + 0.1 * span, -85.0, 85.0));
+        v.elevations.push_back(std::clamp(p.range.hi - 0.1 * span, -85.0, 85.0));
+      }
+    }
+  }
+}
+
+Eigen::Vector3d from_bearing(double bearing, double elevation) {
+  return {std::cos(elevation * kRadians) * std::sin(bearing * kRadians),
+          std::sin(elevation * kRadians),
+          std::cos(elevation * kRadians) * std::cos(bearing * kRadians)};
+}
+
+}  // namespace sightline::camera::shot_search_detail

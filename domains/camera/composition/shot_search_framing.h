@@ -1,0 +1,79 @@
+// The search's view of one composition problem (shot_search.h's steps 1 and 2): a point of
+// the search (position, aim offsets from the direction to the targets' centre, fov, roll)
+// and its assignment; where a candidate aims (Newton steps putting `screen_position`
+// targets at their points); the view turned to take someone the shot keeps out off an edge;
+// and where each person's properties ask the camera to stand (Vantage). Kept apart from the
+// search itself (shot_search.cc), which only walks these points.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "sightline/csp/problem.h"
+#include "sightline/domains/camera/composition/composition_problem.h"
+
+namespace sightline::camera::shot_search_detail {
+
+inline constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+inline constexpr double kRadians = 3.14159265358979323846 / 180.0;
+inline constexpr int kDims = 7;  // x, y, z, yaw offset, pitch offset, fov, roll
+using Point = std::array<double, kDims>;
+
+// Where the properties of person `t` ask the camera to stand: (distance, bearings, elevations).
+struct Vantage {
+  double distance = 4;
+  std::vector<double> bearings;    // degrees, world yaw of (camera - aim)
+  std::vector<double> elevations;  // degrees
+};
+
+// The search's view of one problem: the targets' centre, and the point -> assignment map.
+class Framing {
+ public:
+  // `targets`, `excluded` and `values` are storage kept between solves.
+  Framing(const csp::Problem& problem, const CompositionProblem& owner, std::vector<int>& targets,
+          std::vector<int>& excluded, csp::Assignment& values);
+  const Eigen::Vector3d& centre() const { return centre_; }
+  const std::vector<int>& targets() const { return targets_; }
+
+  // The assignment of a point: the aim offsets are relative to the direction to the centre.
+  const csp::Assignment& values(const Point& x);
+  csp::Score score(const Point& x) { return problem_->score(values(x)); }
+
+  // How far (screen units, > 0) the view at x must turn to take the people the shot keeps
+  // out who are on screen there off each edge of the image (0 left, 1 right, 2 bottom,
+  // 3 top), their bodies' corners `beyond` screen units past it: a group's shot with someone
+  // standing among them may do best giving up a wanted person on that side. False when no
+  // one kept out is on screen, or when a corner of theirs is behind the camera.
+  bool shifts_away(const Point& x, double beyond, std::array<double, 4>& shift);
+
+  // x's aim turned by `shift` screen units toward `side` (see shifts_away). Screen units to
+  // degrees, roughly: one unit is the angle the image spans on that axis. A larger yaw turns
+  // the view left (points move right); a larger pitch looks up (points move down). With a
+  // roll the axes turn too: the candidate is only a guess, and the problem's score decides
+  // whether it is kept.
+  void turn(Point& x, int side, double shift) const;
+
+  // Aim offsets that put the screen_position targets at their points (a few Newton steps
+  // on their mean screen error), from (0, 0): the centre at the image's centre.
+  void aim(Point& x);
+
+ private:
+  // Mean of (screen point - wanted point) over the screen_position properties.
+  bool error(const Point& x, Eigen::Vector2d& out);
+
+  const csp::Problem* problem_;
+  const CompositionProblem* owner_;
+  Eigen::Vector3d centre_;
+  std::vector<int>& targets_;
+  std::vector<int>& excluded_;  // people the shot keeps out who are not also wanted
+  csp::Assignment& values_;
+};
+
+// Where person t's own properties (distance, size, angles) ask the camera to stand, with
+// the lens at `fov` degrees.
+void vantage_into(const CompositionProblem& owner, int t, double fov, Vantage& v);
+// The unit direction at world yaw `bearing` and `elevation` (degrees).
+Eigen::Vector3d from_bearing(double bearing, double elevation);
+
+}  // namespace sightline::camera::shot_search_detail
