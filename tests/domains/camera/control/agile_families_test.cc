@@ -20,6 +20,7 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/sources/agile_families.h"
+#include "tests/domains/camera/control/cut_bound.h"
 #include "tests/domains/camera/control/family_checks.h"
 
 namespace sightline {
@@ -46,13 +47,7 @@ void check_agile(experiments::AgileFamily family, std::uint64_t first, std::uint
     for (const auto& row : r.trace) {
       if (row.cut) cuts.push_back(row.t);
     }
-    for (std::size_t i = 1; i < cuts.size(); ++i) {
-      EXPECT_GE(cuts[i] - cuts[i - 1], 1.0 - 1e-9) << scene.name() << ": cuts at " << cuts[i - 1]
-                                                   << " and " << cuts[i] << " s";
-    }
-    for (std::size_t i = 2; i < cuts.size(); ++i) {
-      EXPECT_GE(cuts[i] - cuts[i - 2], 60.0) << scene.name() << ": 3 cuts within a minute";
-    }
+    expect_within_cut_bound(scene.name(), cuts);
     const experiments::CameraRun arm = film(scene, "spring-arm", camera::kDefaultPreset);
     const experiments::CameraRun thesis = film(scene, "occlusion-octree", "thesis");
     std::printf("[agile] %-16s %5.1f s  cuts %zu  body half-visible %5.1f%% (arm %5.1f%%)  jerk p99 "

@@ -28,6 +28,7 @@
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/independent_check.h"
 #include "sightline/experiments/sources/scene_files.h"
+#include "tests/domains/camera/control/cut_bound.h"
 #include "sightline/experiments/sources/scene_generator.h"
 #include "sightline/experiments/runs/trace.h"
 
@@ -119,16 +120,7 @@ void expect_clean(const Scene& scene, const Judged& a, const std::string& camera
   EXPECT_EQ(a.hidden, 0) << scene.name() << camera;
   EXPECT_EQ(a.too_close, 0) << scene.name() << camera;
   EXPECT_EQ(a.unflagged, 0) << scene.name() << camera;
-  const std::vector<double>& cuts = a.cut_times;
-  for (std::size_t i = 1; i < cuts.size(); ++i) {
-    EXPECT_GE(cuts[i] - cuts[i - 1], 1.0 - 1e-9)
-        << scene.name() << camera << ": cuts at " << cuts[i - 1] << " and " << cuts[i] << " s";
-  }
-  for (std::size_t i = 2; i < cuts.size(); ++i) {
-    EXPECT_GE(cuts[i] - cuts[i - 2], 60.0)
-        << scene.name() << camera << ": 3 cuts within a minute, at " << cuts[i - 2] << ", "
-        << cuts[i - 1] << " and " << cuts[i] << " s";
-  }
+  expect_within_cut_bound(scene.name() + camera, a.cut_times);
 }
 
 // Every cut of a family of scenes, pooled.
