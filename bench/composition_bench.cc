@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
                 ours_sum / shots.size(), pso_sum / shots.size());
     for (std::size_t i = 0; i < shots.size(); ++i) {
       if (ours[i].satisfaction < reference[i] - 0.01 || ours[i].satisfaction < pso[i].satisfaction - 1e-9) {
-        std::printf("  problem %zu (%s): shot-search %.4f, particle-swarm@20 %.4f, reference %.4f\n",
+        std::printf("  problem %zu (%s): shot-search %.5f, particle-swarm@20 %.5f, reference %.5f\n",
                     i + 1, experiments::shot_problem_kind(i + 1).c_str(), ours[i].satisfaction,
                     pso[i].satisfaction, reference[i]);
       }

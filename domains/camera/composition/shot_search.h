@@ -19,7 +19,11 @@
 //      keeps its framing, with Hooke and Jeeves' pattern move; steps halve until
 //      `min_step`, or the budget ends (the coarse refinements stop at 70% of a time limit);
 //      the best's fine refinement also polls random directions before halving (the optimum
-//      of a shot often lies where two properties' ranges end, a ridge no axis step climbs);
+//      of a shot often lies where two properties' ranges end, a ridge no axis step climbs),
+//      every other one turned back so that one person placed on screen stays where they are
+//      (the rim of one's screen_position flat zone, followed while another's point is
+//      approached); a clear leader among the candidates (at most 3/4 of the runner-up's
+//      cost) is refined finely straight after coarsely, before the others;
 //      with a time limit the other candidates follow, then restarts from the best pose
 //      shaken.
 // Every candidate is scored by the problem itself (csp::Problem::score), so the result is

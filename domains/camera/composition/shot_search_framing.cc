@@ -116,6 +116,40 @@ void Framing::aim(Point& x) {
   }
 }
 
+bool Framing::screen_point(const Point& x, std::size_t property, Eigen::Vector2d& out) {
+  const std::optional<View> view = View::of(owner_->pose(values(x)));
+  if (!view) return false;
+  const int target = owner_->targets()[property][0];
+  const auto& person = owner_->world().people()[static_cast<std::size_t>(target)];
+  const std::optional<Eigen::Vector2d> s = view->project(person.aim);
+  if (!s) return false;
+  out = *s;
+  return true;
+}
+
+bool Framing::hold_on_screen(Point& x, std::size_t property, const Eigen::Vector2d& wanted) {
+  for (int step = 0; step < 3; ++step) {
+    Eigen::Vector2d r0;
+    if (!screen_point(x, property, r0)) return false;
+    r0 -= wanted;
+    if (r0.norm() < 1e-6) return true;
+    Eigen::Matrix2d j;
+    constexpr double h = 0.01;
+    for (int k = 0; k < 2; ++k) {
+      Point y = x;
+      y[static_cast<std::size_t>(3 + k)] += h;
+      Eigen::Vector2d r1;
+      if (!screen_point(y, property, r1)) return false;
+      j.col(k) = (r1 - wanted - r0) / h;
+    }
+    if (std::abs(j.determinant()) < 1e-12) return false;
+    const Eigen::Vector2d delta = j.inverse() * r0;
+    x[3] -= std::clamp(delta.x(), -5.0, 5.0);
+    x[4] -= std::clamp(delta.y(), -5.0, 5.0);
+  }
+  return true;
+}
+
 bool Framing::error(const Point& x, Eigen::Vector2d& out) {
   const std::optional<View> view = View::of(owner_->pose(values(x)));
   if (!view) return false;

@@ -58,6 +58,14 @@ class Framing {
   // on their mean screen error), from (0, 0): the centre at the image's centre.
   void aim(Point& x);
 
+  // The screen point of the target of `property` (a screen_position property) seen from x;
+  // false when it is behind the camera.
+  bool screen_point(const Point& x, std::size_t property, Eigen::Vector2d& out);
+  // x's aim offsets moved (a few Newton steps) so that the target of `property` is at
+  // `wanted` on screen again: a move of the camera that keeps one person where they are in
+  // the image. False when it cannot (behind the camera, a singular step).
+  bool hold_on_screen(Point& x, std::size_t property, const Eigen::Vector2d& wanted);
+
  private:
   // Mean of (screen point - wanted point) over the screen_position properties.
   bool error(const Point& x, Eigen::Vector2d& out);
