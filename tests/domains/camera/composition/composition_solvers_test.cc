@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -113,13 +114,21 @@ bool corners_on_screen(const CameraPose& pose, const Aabb& box, std::vector<Eige
   return true;
 }
 
+// shot-search's answer within `evaluations` (a budget that is the same on any machine).
+csp::Assignment shot_search(const CompositionProblem& problem, std::uint64_t evaluations) {
+  register_composition_solvers(solvers::SolverRegistry::global());
+  solvers::SolveContext context;
+  context.limits.max_evaluations = evaluations;
+  auto solver = solvers::SolverRegistry::global().create("shot-search");
+  return solver->solve(problem.problem(), {}, context).best;
+}
+
 // A group shot of ann, ben and cal with dee, whom the shot keeps out (weight 2), standing in
 // the row between ann and ben: no pose frames the three without dee, so the best gives up
 // ann (satisfaction 4/5 = 0.8), dee off one edge of the image. shot-search's candidates
 // include the view turned just enough to take dee off each edge; without them its compass
 // steps, from views that hold all four, found no way out.
 TEST(CompositionSolvers, ShotSearchGivesUpOnePersonToKeepOutSomeoneAmongThem) {
-  register_composition_solvers(solvers::SolverRegistry::global());
   const Scene scene = parse_scene(csp::parse_yaml(
       "name: row\n"
       "actors:\n"
@@ -137,11 +146,7 @@ TEST(CompositionSolvers, ShotSearchGivesUpOnePersonToKeepOutSomeoneAmongThem) {
       "    - {kind: framed, target: dee, range: [0, 0], weight: 2}\n",
       "row.yaml"));
   const CompositionProblem problem(scene, *scene.shot(), 0);
-  solvers::SolveContext context;
-  context.limits.max_evaluations = 1500;
-  const solvers::SolverResult r =
-      solvers::SolverRegistry::global().create("shot-search")->solve(problem.problem(), {}, context);
-  const CameraPose pose = problem.pose(r.best);
+  const CameraPose pose = problem.pose(shot_search(problem, 1500));
   const ShotEvaluation e = problem.evaluate(pose);
   EXPECT_NEAR(e.satisfaction, 0.8, 1e-9);
   // Independently: dee wholly off screen, ben and cal wholly on it.
@@ -162,6 +167,41 @@ TEST(CompositionSolvers, ShotSearchGivesUpOnePersonToKeepOutSomeoneAmongThem) {
     }
     EXPECT_TRUE(left || right || below || above);
   }
+}
+
+// Problem 11 of the benchmark of shot problems (experiments/sources/shot_problems.h, seed
+// 11), written out: ann and ben placed on screen, ann seen from behind, ben 90% visible
+// (hard). Its optimum, 0.95814 (particle-swarm with 1 s), has ann's and ben's screen
+// distances both at the 0.02 rim of their flat zones; without the polls that hold one
+// person on screen, shot-search stopped at 0.9575 whatever its budget.
+TEST(CompositionSolvers, ShotSearchFollowsTheRimOfAScreenPositionToTheOptimum) {
+  const Scene scene = parse_scene(csp::parse_yaml(
+      "name: shot-problem-11\n"
+      "boxes:\n"
+      "  - {min: [-0.842, 0.000, 3.196], max: [0.069, 0.904, 3.946]}\n"
+      "  - {min: [-1.489, 0.000, 5.454], max: [-0.690, 1.056, 6.253]}\n"
+      "  - {min: [-5.335, 0.000, 2.019], max: [-4.624, 0.577, 2.686]}\n"
+      "  - {min: [3.328, 0.000, -0.143], max: [3.728, 3.000, 0.257]}\n"
+      "actors:\n"
+      "  - {name: ann, trajectory: [{t: 0, position: [0.175, 0, -1.460], yaw: -36.407}]}\n"
+      "  - {name: ben, trajectory: [{t: 0, position: [-1.771, 0, 1.934], yaw: 142.604}]}\n"
+      "  - {name: cal, trajectory: [{t: 0, position: [-0.202, 0, 0.606], yaw: -105.934}]}\n"
+      "shot:\n"
+      "  fov: 50\n"
+      "  region: {min: [-9, 0.3, -9], max: [9, 5, 9]}\n"
+      "  clearance: 0.3\n"
+      "  properties:\n"
+      "    - {kind: angle_horizontal, target: ben, range: [-35, 35], weight: 2}\n"
+      "    - {kind: angle_horizontal, target: ann, range: [140, -140]}\n"
+      "    - {kind: screen_position, target: ann, at: [0.25, 0.5]}\n"
+      "    - {kind: screen_position, target: ben, at: [0.667, 0.55]}\n"
+      "    - {kind: framed, target: ann, range: [0.3, 1]}\n"
+      "    - {kind: visible, target: ben, range: [0.9, 1], hard: true}\n",
+      "shot-problem-11.yaml"));
+  const CompositionProblem problem(scene, *scene.shot(), 0);
+  const ShotEvaluation e = problem.evaluate(problem.pose(shot_search(problem, 4000)));
+  ASSERT_TRUE(e.feasible) << e.why_infeasible;
+  EXPECT_GT(e.satisfaction, 0.9581) << "ann " << e.measures[2] << ", ben " << e.measures[3];
 }
 
 }  // namespace
