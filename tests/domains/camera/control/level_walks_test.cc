@@ -3,7 +3,8 @@
 // visible in every frame, the camera never within its clearance radius of a surface, never
 // inside solid matter or outside the world, every jump flagged as a cut. The judge is
 // independent_judge.h (a brute-force grid of its own over the level's triangles, not Embree),
-// never the controller's own flag.
+// never the controller's own flag. The default camera's cuts are held to issue 24's bound
+// (never two within 1 s, at most 2 in any 60 s), but on the one walk known to break it.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -15,6 +16,7 @@
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/sources/scene_files.h"
+#include "tests/domains/camera/control/cut_bound.h"
 #include "tests/domains/camera/control/independent_judge.h"
 
 namespace sightline {
@@ -45,6 +47,19 @@ TEST_P(OcclusionOctreeOnLevelWalk, KeepsTheCharacterVisibleAndTheCameraInTheOpen
   EXPECT_EQ(v.too_close, 0);
   EXPECT_EQ(v.in_solid, 0);
   EXPECT_EQ(v.unflagged, 0);
+  std::vector<double> cuts;
+  for (const auto& row : run.trace) {
+    if (row.cut) cuts.push_back(row.t);
+  }
+  // On ctf_compromise-walk2 she turns 60-90 degrees on the spot 4 times in 80 s and walks
+  // on round an edge, each time with the camera 2.5-4 m to her side: 4 forced cuts
+  // (docs/EXPERIMENTS.md). Held to still breaking the bound, so that the day it stops, this
+  // exception goes.
+  if (GetParam() == "ctf_compromise-walk2") {
+    EXPECT_FALSE(within_cut_bound(cuts)) << "within the bound now: drop the exception";
+  } else {
+    expect_within_cut_bound(GetParam(), cuts);
+  }
   const auto& m = run.metrics;
   std::printf("%s: %d frames, %d cuts, visible fraction %.2f, distance dev %.2f m, solve p99 %.0f us\n",
               GetParam().c_str(), m.frames, m.cuts, m.visible_fraction_mean,
