@@ -26,7 +26,7 @@ struct ShotSearchScratch {
   std::vector<double> bearings;
   std::vector<int> targets;
   std::vector<int> excluded;
-  std::vector<std::size_t> screen_positions;  // the shot's screen_position properties
+  std::vector<std::size_t> placed;  // the shot's screen_position properties
   csp::Assignment values;
 };
 
@@ -89,10 +89,11 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     scratch_->bearings.reserve(64);
     scratch_->group.bearings.reserve(64);
     scratch_->group.elevations.reserve(64);
-    scratch_->screen_positions.reserve(16);
+    scratch_->placed.reserve(16);
   }
   ShotSearchScratch& scratch = *scratch_;
-  Framing framing(problem, *owner, scratch.targets, scratch.excluded, scratch.values);
+  Framing framing(problem, *owner, scratch.targets, scratch.excluded, scratch.placed,
+                  scratch.values);
   const Shot& shot = owner->shot();
   auto clamp = [&](Point& x) {
     for (int k : {0, 1, 2, 5, 6}) x[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x[k]);
@@ -253,13 +254,6 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     best_x = x;
     budget.note_best(evaluations);
   };
-  // The screen_position properties, for the polls that keep one person where they are on
-  // screen.
-  auto& screen_positions = scratch.screen_positions;
-  screen_positions.clear();
-  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
-    if (shot.properties[i].kind == "screen_position") screen_positions.push_back(i);
-  }
   // `polls`: random directions tried when no axis step pays, before the steps halve.
   auto refine = [&](csp::Score& score, Point& x, double scale, double min_step, int polls = 0) {
     std::array<double, kDims> step{position_step * scale, position_step * scale,
@@ -321,9 +315,9 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
           y[k] += u;
           z[k] -= u;
         }
-        if (d % 2 == 1 && !screen_positions.empty()) {
-          const std::size_t kept =
-              screen_positions[static_cast<std::size_t>(d / 2) % screen_positions.size()];
+        const std::vector<std::size_t>& placed = framing.placed();
+        if (d % 2 == 1 && !placed.empty()) {
+          const std::size_t kept = placed[static_cast<std::size_t>(d / 2) % placed.size()];
           if (framing.screen_point(x, kept, held)) {
             for (Point* w : {&y, &z}) {
               clamp(*w);

@@ -19,8 +19,14 @@ double mid(const ValueRange& r, double fallback) {
 }  // namespace
 
 Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
-                 std::vector<int>& targets, std::vector<int>& excluded, csp::Assignment& values)
-    : problem_(&problem), owner_(&owner), targets_(targets), excluded_(excluded), values_(values) {
+                 std::vector<int>& targets, std::vector<int>& excluded,
+                 std::vector<std::size_t>& placed, csp::Assignment& values)
+    : problem_(&problem),
+      owner_(&owner),
+      targets_(targets),
+      excluded_(excluded),
+      placed_(placed),
+      values_(values) {
   const auto& people = owner.world().people();
   targets_ = owner.wanted();
   excluded_.clear();
@@ -31,6 +37,11 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
         excluded_.push_back(t);
       }
     }
+  }
+  placed_.clear();
+  const Shot& shot = owner.shot();
+  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+    if (shot.properties[i].kind == "screen_position") placed_.push_back(i);
   }
   centre_.setZero();
   for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
@@ -90,30 +101,34 @@ void Framing::turn(Point& x, int side, double shift) const {
   }
 }
 
-void Framing::aim(Point& x) {
-  x[3] = x[4] = 0;
-  const Shot& shot = owner_->shot();
-  bool any = false;
-  for (const ShotProperty& p : shot.properties) any = any || p.kind == "screen_position";
-  if (!any) return;
-  for (int step = 0; step < 6; ++step) {
+template <class Residual>
+bool Framing::newton_on_aim(Point& x, int steps, double h, double tolerance, double largest,
+                            Residual residual) {
+  for (int step = 0; step < steps; ++step) {
     Eigen::Vector2d r0;
-    if (!error(x, r0)) return;
-    if (r0.norm() < 1e-4) return;
+    if (!residual(x, r0)) return false;
+    if (r0.norm() < tolerance) return true;
     Eigen::Matrix2d j;
-    constexpr double h = 0.25;
     for (int k = 0; k < 2; ++k) {
       Point y = x;
-      y[3 + k] += h;
+      y[static_cast<std::size_t>(3 + k)] += h;
       Eigen::Vector2d r1;
-      if (!error(y, r1)) return;
+      if (!residual(y, r1)) return false;
       j.col(k) = (r1 - r0) / h;
     }
-    if (std::abs(j.determinant()) < 1e-12) return;
+    if (std::abs(j.determinant()) < 1e-12) return false;
     const Eigen::Vector2d delta = j.inverse() * r0;
-    x[3] -= std::clamp(delta.x(), -30.0, 30.0);
-    x[4] -= std::clamp(delta.y(), -30.0, 30.0);
+    x[3] -= std::clamp(delta.x(), -largest, largest);
+    x[4] -= std::clamp(delta.y(), -largest, largest);
   }
+  return true;
+}
+
+void Framing::aim(Point& x) {
+  x[3] = x[4] = 0;
+  if (placed_.empty()) return;
+  newton_on_aim(x, 6, 0.25, 1e-4, 30.0,
+                [this](const Point& y, Eigen::Vector2d& out) { return error(y, out); });
 }
 
 bool Framing::screen_point(const Point& x, std::size_t property, Eigen::Vector2d& out) {
@@ -128,26 +143,11 @@ bool Framing::screen_point(const Point& x, std::size_t property, Eigen::Vector2d
 }
 
 bool Framing::hold_on_screen(Point& x, std::size_t property, const Eigen::Vector2d& wanted) {
-  for (int step = 0; step < 3; ++step) {
-    Eigen::Vector2d r0;
-    if (!screen_point(x, property, r0)) return false;
-    r0 -= wanted;
-    if (r0.norm() < 1e-6) return true;
-    Eigen::Matrix2d j;
-    constexpr double h = 0.01;
-    for (int k = 0; k < 2; ++k) {
-      Point y = x;
-      y[static_cast<std::size_t>(3 + k)] += h;
-      Eigen::Vector2d r1;
-      if (!screen_point(y, property, r1)) return false;
-      j.col(k) = (r1 - wanted - r0) / h;
-    }
-    if (std::abs(j.determinant()) < 1e-12) return false;
-    const Eigen::Vector2d delta = j.inverse() * r0;
-    x[3] -= std::clamp(delta.x(), -5.0, 5.0);
-    x[4] -= std::clamp(delta.y(), -5.0, 5.0);
-  }
-  return true;
+  return newton_on_aim(x, 3, 0.01, 1e-6, 5.0, [&](const Point& y, Eigen::Vector2d& out) {
+    if (!screen_point(y, property, out)) return false;
+    out -= wanted;
+    return true;
+  });
 }
 
 bool Framing::error(const Point& x, Eigen::Vector2d& out) {
@@ -156,9 +156,8 @@ bool Framing::error(const Point& x, Eigen::Vector2d& out) {
   out.setZero();
   int n = 0;
   const Shot& shot = owner_->shot();
-  for (std::size_t i = 0; i < shot.properties.size(); ++i) {
+  for (std::size_t i : placed_) {
     const ShotProperty& p = shot.properties[i];
-    if (p.kind != "screen_position") continue;
     const auto& person = owner_->world().people()[static_cast<std::size_t>(owner_->targets()[i][0])];
     const std::optional<Eigen::Vector2d> s = view->project(person.aim);
     if (!s) return false;

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "sightline/csp/problem.h"
@@ -30,11 +31,13 @@ struct Vantage {
 // The search's view of one problem: the targets' centre, and the point -> assignment map.
 class Framing {
  public:
-  // `targets`, `excluded` and `values` are storage kept between solves.
+  // `targets`, `excluded`, `placed` and `values` are storage kept between solves.
   Framing(const csp::Problem& problem, const CompositionProblem& owner, std::vector<int>& targets,
-          std::vector<int>& excluded, csp::Assignment& values);
+          std::vector<int>& excluded, std::vector<std::size_t>& placed, csp::Assignment& values);
   const Eigen::Vector3d& centre() const { return centre_; }
   const std::vector<int>& targets() const { return targets_; }
+  // The shot's screen_position properties (their indices), in order.
+  const std::vector<std::size_t>& placed() const { return placed_; }
 
   // The assignment of a point: the aim offsets are relative to the direction to the centre.
   const csp::Assignment& values(const Point& x);
@@ -69,12 +72,21 @@ class Framing {
  private:
   // Mean of (screen point - wanted point) over the screen_position properties.
   bool error(const Point& x, Eigen::Vector2d& out);
+  // Up to `steps` Newton steps on x's aim offsets driving `residual` (a screen-space error,
+  // bool residual(const Point&, Eigen::Vector2d&), false when it has none) to 0, with a
+  // finite-difference Jacobian of step `h`, each step at most `largest` degrees per offset.
+  // True when done (below `tolerance`, or all steps taken), false when a residual or the
+  // Jacobian failed.
+  template <class Residual>
+  bool newton_on_aim(Point& x, int steps, double h, double tolerance, double largest,
+                     Residual residual);
 
   const csp::Problem* problem_;
   const CompositionProblem* owner_;
   Eigen::Vector3d centre_;
   std::vector<int>& targets_;
   std::vector<int>& excluded_;  // people the shot keeps out who are not also wanted
+  std::vector<std::size_t>& placed_;
   csp::Assignment& values_;
 };
 

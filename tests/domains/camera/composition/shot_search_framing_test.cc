@@ -44,8 +44,9 @@ TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) 
       "two.yaml"));
   const CompositionProblem owner(scene, *scene.shot(), 0);
   std::vector<int> targets, excluded;
+  std::vector<std::size_t> placed;
   csp::Assignment values;
-  shot_search_detail::Framing framing(owner.problem(), owner, targets, excluded, values);
+  shot_search_detail::Framing framing(owner.problem(), owner, targets, excluded, placed, values);
   const auto& people = owner.world().people();
   const Eigen::Vector3d alice = people[*owner.world().find("alice")].aim;
   const Eigen::Vector3d bob = people[*owner.world().find("bob")].aim;
