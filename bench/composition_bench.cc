@@ -9,8 +9,8 @@
 // as Markdown: per solver and budget, the mean satisfaction, the problems solved feasibly,
 // the problems within 0.01 of the reference, and the mean and p99 solve time.
 //
-//   build/bench/composition_bench [--problems N] [--reference-ms MS] [--budgets-ms a,b,...]
-//                                 [--reference-solvers a,b,...]
+//   build/bench/composition_bench [--problems N] [--first SEED] [--reference-ms MS]
+//                                 [--budgets-ms a,b,...] [--reference-solvers a,b,...]
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -76,11 +76,13 @@ std::vector<std::string> split(const std::string& text) {
 int main(int argc, char** argv) {
   CLI::App app{"composition solvers: satisfaction against time budget"};
   int problems = 60;
+  int first = 1;
   double reference_ms = 1000;
   std::string budgets_text = "0.5,1,2,5,20";
   std::string reference_solvers = "shot-search,particle-swarm,sls,toric>shot-search";
   std::string solver_list;
-  app.add_option("--problems", problems, "shot problems (seeds 1..N)");
+  app.add_option("--problems", problems, "how many shot problems");
+  app.add_option("--first", first, "the first problem's seed (problems first..first+N-1)");
   app.add_option("--reference-ms", reference_ms, "the reference budget");
   app.add_option("--budgets-ms", budgets_text, "budgets, comma-separated");
   app.add_option("--reference-solvers", reference_solvers, "solvers given the reference budget");
@@ -92,7 +94,9 @@ int main(int argc, char** argv) {
   for (const std::string& b : split(budgets_text)) budgets.push_back(std::stod(b));
 
   std::vector<camera::Scene> scenes;
-  for (int seed = 1; seed <= problems; ++seed) scenes.push_back(experiments::shot_problem(seed));
+  for (int seed = first; seed < first + problems; ++seed) {
+    scenes.push_back(experiments::shot_problem(seed));
+  }
   std::vector<std::unique_ptr<camera::CompositionProblem>> shots;
   for (const camera::Scene& s : scenes) {
     shots.push_back(std::make_unique<camera::CompositionProblem>(s, *s.shot(), 0));
@@ -174,7 +178,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < shots.size(); ++i) {
       if (ours[i].satisfaction < reference[i] - 0.01 || ours[i].satisfaction < pso[i].satisfaction - 1e-9) {
         std::printf("  problem %zu (%s): shot-search %.5f, particle-swarm@20 %.5f, reference %.5f\n",
-                    i + 1, experiments::shot_problem_kind(i + 1).c_str(), ours[i].satisfaction,
+                    first + i, experiments::shot_problem_kind(first + i).c_str(), ours[i].satisfaction,
                     pso[i].satisfaction, reference[i]);
       }
     }

@@ -131,6 +131,8 @@ class ShotPropertyConstraint : public csp::Constraint {
   double violation(std::span<const double> values) const override;
   // The property's score at a pose (0 for an invalid one).
   double score(const View& view) const;
+  // Whether score() reads the view's position only (ShotPropertyKind::position_only).
+  bool position_only() const { return kind_->position_only; }
   const ShotProperty& property() const { return *property_; }
   const CompositionProblem& owner() const { return *owner_; }
 

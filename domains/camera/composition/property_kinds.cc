@@ -111,6 +111,7 @@ ShotPropertyKind size_kind() {
 ShotPropertyKind angle_horizontal_kind() {
   ShotPropertyKind k;
   k.name = "angle_horizontal";
+  k.position_only = true;
   k.description = "yaw of (camera - aim point) minus the target's yaw, degrees (0: from the front)";
   k.circular = true;
   k.read = [](ShotProperty&, const csp::Spec&) { return 30.0; };
@@ -126,6 +127,7 @@ ShotPropertyKind angle_horizontal_kind() {
 ShotPropertyKind angle_vertical_kind() {
   ShotPropertyKind k;
   k.name = "angle_vertical";
+  k.position_only = true;
   k.description = "elevation of (camera - aim point) above the horizontal, degrees";
   k.read = [](ShotProperty&, const csp::Spec&) { return 30.0; };
   k.measure = [](const ShotProperty&, const MeasureContext& c) {
@@ -138,6 +140,7 @@ ShotPropertyKind angle_vertical_kind() {
 ShotPropertyKind visible_kind() {
   ShotPropertyKind k;
   k.name = "visible";
+  k.position_only = true;
   k.description = "fraction of the target's samples whose sight line from the camera is clear";
   k.default_range = ValueRange{1, 1};
   k.read = read_nothing;
@@ -154,6 +157,7 @@ ShotPropertyKind visible_kind() {
 ShotPropertyKind distance_kind() {
   ShotPropertyKind k;
   k.name = "distance";
+  k.position_only = true;
   k.description = "distance from the camera to the target's aim point, metres";
   k.read = read_nothing;
   k.measure = [](const ShotProperty&, const MeasureContext& c) {

@@ -36,6 +36,10 @@ struct ShotPropertyKind {
   std::vector<std::string> fields;  // its own, besides kind, target(s), range, softness, weight, hard
   std::optional<ValueRange> default_range;  // nullopt: `range:` is required
   bool circular = false;  // ranges and gaps taken modulo 360 (degrees)
+  // The measure reads the view's position only, not its aim, fov or roll (visible,
+  // distance, the vantage angles): a search that turns the view without moving it need not
+  // measure it again.
+  bool position_only = false;
   // Reads the kind's own fields into the property and returns its default softness
   // (which may depend on them: size's area, order's depth). Fails at the field's line.
   std::function<double(ShotProperty& property, const csp::Spec& entry)> read;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <optional>
 #include <random>
@@ -21,13 +22,12 @@ namespace sightline::camera {
 // once the vectors have grown.
 struct ShotSearchScratch {
   std::vector<std::pair<csp::Score, shot_search_detail::Point>> candidates;
+  std::vector<std::pair<csp::Score, shot_search_detail::Point>> sorted;  // candidates, best first
+  std::vector<std::uint32_t> order;
   std::vector<std::pair<int, shot_search_detail::Vantage>> vantages;
   shot_search_detail::Vantage group;
   std::vector<double> bearings;
-  std::vector<int> targets;
-  std::vector<int> excluded;
-  std::vector<std::size_t> placed;  // the shot's screen_position properties
-  csp::Assignment values;
+  shot_search_detail::FramingStorage framing;
 };
 
 namespace {
@@ -85,15 +85,16 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     // Room for the most candidates and angles a global solve makes with several people, so
     // the vectors stop growing after the first solves.
     scratch_ = std::make_unique<ShotSearchScratch>();
-    scratch_->candidates.reserve(1024);
+    scratch_->candidates.reserve(2048);
+    scratch_->sorted.reserve(2048);
+    scratch_->order.reserve(2048);
     scratch_->bearings.reserve(64);
     scratch_->group.bearings.reserve(64);
     scratch_->group.elevations.reserve(64);
-    scratch_->placed.reserve(16);
+    scratch_->framing.placed.reserve(16);
   }
   ShotSearchScratch& scratch = *scratch_;
-  Framing framing(problem, *owner, scratch.targets, scratch.excluded, scratch.placed,
-                  scratch.values);
+  Framing framing(problem, *owner, scratch.framing);
   const Shot& shot = owner->shot();
   auto clamp = [&](Point& x) {
     for (int k : {0, 1, 2, 5, 6}) x[k] = problem.domain(static_cast<csp::VariableId>(k)).clamp(x[k]);
@@ -151,7 +152,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     ++evaluations;
   }
   // Two subjects at screen points: the exact two-subject poses (toric_framing.h), coarsely.
-  if (options_.global && !toric_) toric_ = std::make_unique<ToricFraming>("toric", ToricFraming::Options{16, 32});
+  if (options_.global && !toric_) toric_ = std::make_unique<ToricFraming>("toric", ToricFraming::Options{32, 16});
   if (options_.global && toric_checked_ != &problem) {  // its reason is a string: asked once a problem
     toric_checked_ = &problem;
     toric_suits_ = toric_->unsuitable_reason(problem).empty();
@@ -230,13 +231,24 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     add(region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5))
                          .cwiseProduct(region.max - region.min));
   }
-  // Best first, ties in the order added: an insertion sort in place (std::stable_sort takes
-  // a buffer from the heap; there are at most a few hundred candidates).
-  for (std::size_t i = 1; i < candidates.size(); ++i) {
-    for (std::size_t j = i; j > 0 && candidates[j].first.better_than(candidates[j - 1].first); --j) {
-      std::swap(candidates[j], candidates[j - 1]);
-    }
-  }
+  // Best first (fewer hard, then soft costs), ties in the order added. Their indices are
+  // sorted, in the scratch (std::stable_sort takes a buffer from the heap): a group's shot
+  // makes well over a thousand candidates, which an insertion sort took a millisecond to
+  // order.
+  auto& order = scratch.order;
+  order.resize(candidates.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const csp::Score& sa = candidates[a].first;
+    const csp::Score& sb = candidates[b].first;
+    if (sa.hard != sb.hard) return sa.hard < sb.hard;
+    if (sa.soft != sb.soft) return sa.soft < sb.soft;
+    return a < b;
+  });
+  auto& sorted = scratch.sorted;
+  sorted.clear();
+  for (std::uint32_t i : order) sorted.push_back(candidates[i]);
+  candidates.swap(sorted);
 
   csp::Score best = candidates.front().first;
   Point best_x = candidates.front().second;
@@ -260,6 +272,17 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
                                    position_step * scale, 4 * scale, 4 * scale,
                                    shot.fov.fixed() ? 0.0 : 4.0 * scale,
                                    shot.roll.fixed() ? 0.0 : 4.0 * scale};
+    // Moves x to y (clamped into the domains) when y scores better.
+    auto moved_to = [&](Point y) {
+      clamp(y);
+      if (y == x) return false;
+      const csp::Score s = framing.score(y);
+      ++evaluations;
+      if (!s.better_than(score)) return false;
+      score = s;
+      x = y;
+      return true;
+    };
     while (!budget.exhausted(evaluations, iterations)) {
       ++iterations;
       bool improved = false;
@@ -269,13 +292,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
         for (double sign : {1.0, -1.0}) {
           Point y = x;
           y[static_cast<std::size_t>(k)] += sign * step[static_cast<std::size_t>(k)];
-          clamp(y);
-          if (y == x) continue;
-          const csp::Score s = framing.score(y);
-          ++evaluations;
-          if (s.better_than(score)) {
-            score = s;
-            x = y;
+          if (moved_to(y)) {
             improved = true;
             break;
           }
@@ -325,17 +342,18 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
             }
           }
         }
-        for (Point* w : {&y, &z}) {
-          clamp(*w);
-          if (*w == x) continue;
-          const csp::Score s = framing.score(*w);
-          ++evaluations;
-          if (s.better_than(score)) {
-            score = s;
-            x = *w;
-            improved = true;
-            break;
-          }
+        improved = moved_to(y) || moved_to(z);
+      }
+      // And each position axis, both ways, turned back to hold each placed person: the
+      // rim moves in a fixed set of directions (the random ones above may miss the one).
+      const std::vector<std::size_t>& placed = framing.placed();
+      for (std::size_t p = 0; polls > 0 && p < placed.size() && !improved; ++p) {
+        if (!framing.screen_point(x, placed[p], held)) continue;
+        for (int k = 0; k < 6 && !improved && !budget.exhausted(evaluations, iterations); ++k) {
+          Point w = x;
+          w[static_cast<std::size_t>(k / 2)] += (k % 2 == 0 ? 1 : -1) * step[static_cast<std::size_t>(k / 2)];
+          clamp(w);
+          improved = framing.hold_on_screen(w, placed[p], held) && moved_to(w);
         }
       }
       keep_best(score, x);

@@ -26,8 +26,10 @@
 //      cost) is refined finely straight after coarsely, before the others;
 //      with a time limit the other candidates follow, then restarts from the best pose
 //      shaken.
-// Every candidate is scored by the problem itself (csp::Problem::score), so the result is
-// the problem's optimum as far as the search found it, hard constraints first.
+// Every candidate is scored by the problem itself (the problem's own score, computed with
+// one view shared by the properties, and the terms that read the camera's position only
+// kept while a step only turns the view), so the result is the problem's optimum as far
+// as the search found it, hard constraints first.
 #pragma once
 
 #include <cstdint>

@@ -19,14 +19,14 @@ double mid(const ValueRange& r, double fallback) {
 }  // namespace
 
 Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
-                 std::vector<int>& targets, std::vector<int>& excluded,
-                 std::vector<std::size_t>& placed, csp::Assignment& values)
+                 FramingStorage& storage)
     : problem_(&problem),
       owner_(&owner),
-      targets_(targets),
-      excluded_(excluded),
-      placed_(placed),
-      values_(values) {
+      targets_(storage.targets),
+      excluded_(storage.excluded),
+      placed_(storage.placed),
+      values_(storage.values),
+      storage_(storage) {
   const auto& people = owner.world().people();
   targets_ = owner.wanted();
   excluded_.clear();
@@ -47,6 +47,47 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
   for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
   centre_ /= static_cast<double>(std::max<std::size_t>(1, targets_.size()));
   values_.resize(kDims);
+  const std::size_t n = problem.num_constraints();
+  storage_.properties.assign(n, nullptr);
+  storage_.position_only.assign(n, 0);
+  storage_.at_position.assign(n, csp::Score{});
+  for (csp::ConstraintId id = 0; id < n; ++id) {
+    const csp::Constraint& c = problem.constraint(id);
+    const auto* property = dynamic_cast<const ShotPropertyConstraint*>(&c);
+    storage_.properties[id] = property;
+    const auto scope = c.scope();
+    const bool on_position = std::all_of(scope.begin(), scope.end(),
+                                         [](csp::VariableId v) { return v < 3; });
+    storage_.position_only[id] = property ? property->position_only() : on_position;
+  }
+}
+
+csp::Score Framing::score(const Point& x) {
+  const csp::Assignment& v = values(x);
+  const std::optional<View> view = View::of(owner_->pose(v));
+  // An invalid view scores every property 0 (their violation() without a view): nothing to
+  // share, and nothing kept (a position's terms are kept only as scored with a valid view).
+  if (!view) return problem_->score(v);
+  const bool same_position = has_position_ && view->position() == scored_position_;
+  csp::Score total;
+  for (csp::ConstraintId id = 0; id < storage_.properties.size(); ++id) {
+    if (storage_.position_only[id] && same_position) {
+      total += storage_.at_position[id];
+      continue;
+    }
+    csp::Score term;
+    if (const ShotPropertyConstraint* property = storage_.properties[id]) {
+      const double weighted = property->weight() * (1 - property->score(*view));
+      term = property->is_hard() ? csp::Score{weighted, 0} : csp::Score{0, weighted};
+    } else {
+      term = problem_->constraint_score(id, v);
+    }
+    if (storage_.position_only[id]) storage_.at_position[id] = term;
+    total += term;
+  }
+  scored_position_ = view->position();
+  has_position_ = true;
+  return total;
 }
 
 const csp::Assignment& Framing::values(const Point& x) {

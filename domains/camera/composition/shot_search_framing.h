@@ -28,12 +28,26 @@ struct Vantage {
   std::vector<double> elevations;  // degrees
 };
 
+// What a Framing works in, kept between solves so that a tracking camera's frames allocate
+// nothing once the vectors have grown.
+struct FramingStorage {
+  std::vector<int> targets;
+  std::vector<int> excluded;
+  std::vector<std::size_t> placed;  // the shot's screen_position properties
+  csp::Assignment values;
+  // Per constraint of the problem: the shot property it is (nullptr for the others), whether
+  // it reads the camera's position only, and its score at the last position scored.
+  std::vector<const ShotPropertyConstraint*> properties;
+  std::vector<char> position_only;
+  std::vector<csp::Score> at_position;
+};
+
 // The search's view of one problem: the targets' centre, and the point -> assignment map.
 class Framing {
  public:
-  // `targets`, `excluded`, `placed` and `values` are storage kept between solves.
-  Framing(const csp::Problem& problem, const CompositionProblem& owner, std::vector<int>& targets,
-          std::vector<int>& excluded, std::vector<std::size_t>& placed, csp::Assignment& values);
+  // `storage` is kept between solves; one Framing per solve (a solve's problem may have
+  // moved its people since the last).
+  Framing(const csp::Problem& problem, const CompositionProblem& owner, FramingStorage& storage);
   const Eigen::Vector3d& centre() const { return centre_; }
   const std::vector<int>& targets() const { return targets_; }
   // The shot's screen_position properties (their indices), in order.
@@ -41,7 +55,12 @@ class Framing {
 
   // The assignment of a point: the aim offsets are relative to the direction to the centre.
   const csp::Assignment& values(const Point& x);
-  csp::Score score(const Point& x) { return problem_->score(values(x)); }
+  // The problem's score of x's assignment, the same value as problem.score(values(x)) (the
+  // same terms, added in the same order). Faster: the shot's properties share one view of
+  // the pose instead of making one each, and the terms that read the camera's position
+  // only (the `visible` properties' sight lines, clearance) are kept from the last point
+  // scored when x has not moved, only turned or zoomed (most of a compass search's steps).
+  csp::Score score(const Point& x);
 
   // How far (screen units, > 0) the view at x must turn to take the people the shot keeps
   // out who are on screen there off each edge of the image (0 left, 1 right, 2 bottom,
@@ -88,6 +107,10 @@ class Framing {
   std::vector<int>& excluded_;  // people the shot keeps out who are not also wanted
   std::vector<std::size_t>& placed_;
   csp::Assignment& values_;
+  FramingStorage& storage_;
+  // Where storage_.at_position was scored (valid once has_position_ is set).
+  Eigen::Vector3d scored_position_ = Eigen::Vector3d::Zero();
+  bool has_position_ = false;
 };
 
 // Where person t's own properties (distance, size, angles) ask the camera to stand, with

@@ -153,7 +153,16 @@ void ToricFraming::solve_into(const csp::Problem& problem, std::span<const doubl
     const Eigen::Vector3d c2 = camera_ray(s.sb, tan_half, shot.aspect);
     const double theta = std::acos(std::clamp(c1.dot(c2), -1.0, 1.0));
     if (!(theta > 1e-9)) continue;
-    for (int i = 1; i <= beta_steps && !budget.exhausted(evaluations, iterations); ++i) {
+    // The samples of beta, i = 1..beta_steps, visited coarse to fine (i - 1 is the
+    // bit-reversed n, those past beta_steps skipped): a solve its time limit cuts short
+    // has sampled the whole range evenly, not only the angles nearest the axis.
+    int bits = 0;
+    while ((1 << bits) < beta_steps) ++bits;
+    for (int n = 0; n < (1 << bits) && !budget.exhausted(evaluations, iterations); ++n) {
+      int reversed = 0;
+      for (int b = 0; b < bits; ++b) reversed |= ((n >> b) & 1) << (bits - 1 - b);
+      if (reversed >= beta_steps) continue;
+      const int i = reversed + 1;
       ++iterations;
       const double beta = (kPi - theta) * i / (beta_steps + 1);
       const double reach = length * std::sin(theta + beta) / std::sin(theta);
@@ -169,28 +178,36 @@ void ToricFraming::solve_into(const csp::Problem& problem, std::span<const doubl
           consider(place(2 * kPi * j / phi_steps), o, fov, o.roll);
         }
       }
-      // Where roll(phi) crosses the wanted roll: bisect to the root, so the subjects land
-      // on their points with exactly that roll.
+      // Where roll(phi) crosses the wanted roll: the root, bracketed, by the Illinois
+      // variant of regula falsi (superlinear; plain bisection took 60 orientations a root,
+      // most of a short solve), so the subjects land on their points with that roll.
       for (int j = 0; j < phi_steps; ++j) {
         const auto k = static_cast<std::size_t>(j);
         if (!valid_at[k] || !valid_at[k + 1]) continue;
         double lo = 2 * kPi * j / phi_steps, hi = 2 * kPi * (j + 1) / phi_steps;
         double g_lo = signed_degrees(roll_at[k] - wanted_roll);
-        const double g_hi = signed_degrees(roll_at[k + 1] - wanted_roll);
+        double g_hi = signed_degrees(roll_at[k + 1] - wanted_roll);
         if ((g_lo > 0) == (g_hi > 0) || std::abs(g_lo) > 90 || std::abs(g_hi) > 90) continue;
-        for (int step = 0; step < 60; ++step) {
-          const double m = (lo + hi) / 2;
-          const Oriented o = orient(place(m), s, c1, c2);
+        double phi = (lo + hi) / 2;
+        int kept_side = 0;  // -1: lo kept twice running, +1: hi (its value is then halved)
+        for (int step = 0; step < 60 && hi - lo > 1e-13; ++step) {
+          phi = std::clamp(hi - g_hi * (hi - lo) / (g_hi - g_lo), lo, hi);
+          const Oriented o = orient(place(phi), s, c1, c2);
           if (!o.valid) break;
           const double g = signed_degrees(o.roll - wanted_roll);
+          if (std::abs(g) < 1e-11) break;
           if ((g > 0) == (g_lo > 0)) {
-            lo = m;
+            lo = phi;
             g_lo = g;
+            if (kept_side == 1) g_hi /= 2;
+            kept_side = 1;
           } else {
-            hi = m;
+            hi = phi;
+            g_hi = g;
+            if (kept_side == -1) g_lo /= 2;
+            kept_side = -1;
           }
         }
-        const double phi = (lo + hi) / 2;
         const Oriented o = orient(place(phi), s, c1, c2);
         if (o.valid) consider(place(phi), o, fov, wanted_roll);
       }

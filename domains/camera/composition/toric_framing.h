@@ -8,10 +8,12 @@
 // sin(theta + beta) / sin(theta), phi the turn about AB. At each such p exactly one
 // orientation puts A and B on their points; its roll varies with phi. The solver searches
 // (beta, phi) on a grid, keeps the poses whose roll the shot allows (for a fixed roll:
-// the roots of roll(phi) - roll, by bisection, so both subjects land on their points to
-// within rounding), and scores each with the whole problem (the other properties, region,
-// clearance): the best is the result. Used alone, or as the seed of a refining solver
-// (`toric>shot-search`). With a fov range it tries its ends and its middle.
+// the roots of roll(phi) - roll, bracketed by the grid and found by regula falsi, so both
+// subjects land on their points to within rounding), and scores each with the whole
+// problem (the other properties, region, clearance): the best is the result. The beta
+// samples are visited coarse to fine, so a solve cut short by its time limit has covered
+// the whole range. Used alone, or as the seed of a refining solver (`toric>shot-search`).
+// With a fov range it tries its ends and its middle.
 #pragma once
 
 #include <cstdint>

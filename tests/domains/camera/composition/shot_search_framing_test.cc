@@ -1,13 +1,16 @@
 // shot-search's view of a problem (shot_search_framing.h) and the move it makes along the rim
 // of a screen_position's flat zone: hold_on_screen keeps one person where they are in the
 // image (checked by this test's own pinhole, FORMATS.md's definition) while the camera moves.
-// What the move buys shot-search: composition_solvers_test.cc (problem 11).
+// What the move buys shot-search: composition_solvers_test.cc (problem 11). And the search's
+// own scoring (a view shared by the properties, position-only terms kept while the camera
+// only turns) against the problem's full evaluation.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "sightline/csp/files/yaml_spec.h"
@@ -29,8 +32,20 @@ Eigen::Vector2d on_screen(const CameraPose& pose, const Eigen::Vector3d& q) {
   return {(1 + d.dot(r) / (z * t * pose.aspect)) / 2, (1 + d.dot(u) / (z * t)) / 2};
 }
 
+// A scene's shot at t = 0 and the search's view of it.
+struct FramedShot {
+  FramedShot(const std::string& yaml, const std::string& file)
+      : scene(parse_scene(csp::parse_yaml(yaml, file))),
+        owner(scene, *scene.shot(), 0),
+        framing(owner.problem(), owner, storage) {}
+  const Scene scene;
+  const CompositionProblem owner;
+  shot_search_detail::FramingStorage storage;
+  shot_search_detail::Framing framing;
+};
+
 TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) {
-  const Scene scene = parse_scene(csp::parse_yaml(
+  FramedShot shot(
       "name: two\n"
       "actors:\n"
       "  - {name: alice, trajectory: [{t: 0, position: [-1, 0, 0], yaw: 0}]}\n"
@@ -41,12 +56,9 @@ TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) 
       "  properties:\n"
       "    - {kind: screen_position, target: alice, at: [0.35, 0.6]}\n"
       "    - {kind: screen_position, target: bob, at: [0.7, 0.5]}\n",
-      "two.yaml"));
-  const CompositionProblem owner(scene, *scene.shot(), 0);
-  std::vector<int> targets, excluded;
-  std::vector<std::size_t> placed;
-  csp::Assignment values;
-  shot_search_detail::Framing framing(owner.problem(), owner, targets, excluded, placed, values);
+      "two.yaml");
+  const CompositionProblem& owner = shot.owner;
+  shot_search_detail::Framing& framing = shot.framing;
   const auto& people = owner.world().people();
   const Eigen::Vector3d alice = people[*owner.world().find("alice")].aim;
   const Eigen::Vector3d bob = people[*owner.world().find("bob")].aim;
@@ -75,6 +87,77 @@ TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) 
   }
   // The move is a real one: the other person's place on screen changes.
   EXPECT_GT(bob_moved, 40);
+}
+
+// Framing::score keeps the terms that read the camera's position only (visible, distance,
+// the vantage angles, clearance) while the camera turns or zooms without moving; it must
+// give exactly the problem's own score, whatever the sequence of points: moves, turns,
+// zooms, rolls, a point whose view is invalid (a field of view of 0) and back.
+TEST(ShotSearchFraming, ScoreIsTheProblemsScoreWhetherTheCameraMovesOrOnlyTurns) {
+  FramedShot shot(
+      "name: three among pillars\n"
+      "boxes:\n"
+      "  - {min: [-0.3, 0, 1.5], max: [0.3, 3, 2.1]}\n"
+      "  - {min: [1.5, 0, 2.5], max: [2.2, 1.2, 3.2]}\n"
+      "actors:\n"
+      "  - {name: ann, trajectory: [{t: 0, position: [-1, 0, 0], yaw: 0}]}\n"
+      "  - {name: ben, trajectory: [{t: 0, position: [1, 0, 0.5], yaw: 180}]}\n"
+      "  - {name: cal, trajectory: [{t: 0, position: [0, 0, -1.5], yaw: 90}]}\n"
+      "shot:\n"
+      "  fov: [30, 70]\n"
+      "  roll: [-20, 20]\n"
+      "  region: {min: [-5, 0.3, 1], max: [5, 4, 7]}\n"
+      "  clearance: 0.3\n"
+      "  properties:\n"
+      "    - {kind: framed, target: ann}\n"
+      "    - {kind: visible, target: ann, range: [0.6, 1]}\n"
+      "    - {kind: visible, target: ben, hard: true}\n"
+      "    - {kind: framed, target: cal, range: [0, 0], weight: 2}\n"
+      "    - {kind: screen_position, target: ben, at: [0.6, 0.5]}\n"
+      "    - {kind: angle_horizontal, target: ann, range: [-40, 40]}\n"
+      "    - {kind: distance, target: ben, range: [3, 5]}\n"
+      "    - {kind: size, target: ann, range: [0.3, 0.5]}\n"
+      "    - {kind: order, targets: [ann, ben]}\n",
+      "three.yaml");
+  const CompositionProblem& owner = shot.owner;
+  shot_search_detail::Framing& framing = shot.framing;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  shot_search_detail::Point x{0, 1.7, 4, 0, 0, 50, 0};
+  int moves = 0, turns = 0, differing_visible = 0;
+  double last_visible = -1;
+  for (int trial = 0; trial < 400; ++trial) {
+    const double kind = unit(rng);
+    if (kind < 0.3) {  // a move: a new position anywhere in the region
+      x[0] = -5 + 10 * unit(rng);
+      x[1] = 0.3 + 3.7 * unit(rng);
+      x[2] = 1 + 6 * unit(rng);
+      ++moves;
+    } else if (kind < 0.95) {  // a turn, a zoom or a roll where it stands
+      x[3] += 20 * (unit(rng) - 0.5);
+      x[4] += 20 * (unit(rng) - 0.5);
+      x[5] = 30 + 40 * unit(rng);
+      x[6] = -20 + 40 * unit(rng);
+      ++turns;
+    } else {  // no view: every property scores 0
+      x[5] = 0;
+    }
+    const csp::Score fast = framing.score(x);
+    const csp::Score full = owner.problem().score(framing.values(x));
+    ASSERT_EQ(fast.hard, full.hard) << trial;
+    ASSERT_EQ(fast.soft, full.soft) << trial;
+    if (kind >= 0.95) {
+      EXPECT_FALSE(View::of(owner.pose(framing.values(x)))) << trial;
+      x[5] = 50;
+    }
+    // The sequence is a real test of the kept terms: ann's sight lines change between moves.
+    const double visible = owner.problem().constraint_score(1, framing.values(x)).soft;
+    differing_visible += kind < 0.3 && visible != last_visible;
+    last_visible = visible;
+  }
+  EXPECT_GT(moves, 80);
+  EXPECT_GT(turns, 200);
+  EXPECT_GT(differing_visible, 10);
 }
 
 }  // namespace
