@@ -213,7 +213,19 @@ void TrackingCamera::move_toward(double dt) {
   }
   const Eigen::Vector3d new_position = pose_.position + step;
   const Eigen::Vector3d old_dir = (pose_.look_at - pose_.position).normalized();
-  const Eigen::Vector3d dir = (old_dir + k * (filtered_.look_at - old_dir)).normalized();
+  // On a long move (the camera held back by max_speed, the low-passed aim metres ahead), the
+  // look turns from the aim's direction toward the point the aim's view centres at the
+  // people's depth, so that they stay in view on the way instead of the camera looking,
+  // from where it is, the way it will look from there.
+  Eigen::Vector3d wanted_dir = filtered_.look_at;
+  const double behind = (new_position - filtered_.position).norm();
+  if (behind > kNearAim) {
+    const double depth = std::max(1.0, (wanted_centre() - filtered_.position).dot(filtered_.look_at));
+    const Eigen::Vector3d to = filtered_.position + depth * filtered_.look_at - new_position;
+    const double w = std::min(1.0, (behind - kNearAim) / kTurnAcross);
+    if (to.norm() > 1e-6) wanted_dir = ((1 - w) * filtered_.look_at + w * to.normalized()).normalized();
+  }
+  const Eigen::Vector3d dir = (old_dir + k * (wanted_dir - old_dir)).normalized();
   pose_.position = new_position;
   pose_.look_at = new_position + dir;
   pose_.fov += k * (filtered_.fov - pose_.fov);

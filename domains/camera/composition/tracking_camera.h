@@ -27,12 +27,13 @@
 // best replaces it if it does better with foresight; else a global solve does, when that
 // global pose kept everyone (or on the fall), at most one at hand at the start and then
 // `resolves_per_second`. So the global search costs the same every frame, and few frames
-// pay for a whole global solve. The
-// camera follows the aimed-for pose through two first-order stages (the aimed-for pose
-// low-passed, then a spring toward that; time constant `smoothing` each), bounded by
-// max_speed; the look direction, fov and roll alike; a step that would end inside the
-// shot's clearance is halved, else not taken. When the camera's own pose breaks the shot while the aimed-for pose keeps it
-// and is out of one frame's smooth reach, it cuts there, never twice within
+// pay for a whole global solve. The camera follows the aimed-for pose through two
+// first-order stages (the aimed-for pose low-passed, then a spring toward that; time
+// constant `smoothing` each), bounded by max_speed; the look direction, fov and roll alike
+// (on a long move, the look turned toward the point the aimed-for view centres at the
+// people's depth); a step that would end inside the shot's clearance is halved, else not
+// taken. When the camera's own pose breaks the shot while the aimed-for pose keeps it and
+// is out of one frame's smooth reach, it cuts there, never twice within
 // `min_shot_seconds`. Once warm, a frame allocates nothing.
 #pragma once
 
@@ -87,6 +88,11 @@ class TrackingCamera : public CameraController {
   const ShotEvaluation& evaluation() const { return evaluation_; }
 
  private:
+  // Metres between the camera and the low-passed aimed-for pose beyond which the camera's
+  // look turns toward what that pose centres on, fully kTurnAcross metres farther (see
+  // move_toward). Within it (the camera's usual lag), the aim's own direction.
+  static constexpr double kNearAim = 2.0;
+  static constexpr double kTurnAcross = 4.0;
   void solve_globally(std::uint64_t evaluations);
   void move_toward(double dt);
   void jump_to_aim();
