@@ -177,7 +177,9 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     }
   }
   // Around an aim point at the vantage's distance (and 15% nearer and farther), bearings
-  // (each with its neighbours 15 degrees off) and elevations.
+  // (each with its neighbours 15 degrees off) and elevations: all the bearings at one
+  // distance and elevation before the next, so that candidates a time limit stops early
+  // have looked all round (problems 140 and 164 of the benchmark, group shots).
   auto around = [&](const Eigen::Vector3d& aim, const Vantage& v, const Eigen::Vector3d* subject) {
     static constexpr double kAllBearings[] = {0, 45, 90, 135, 180, 225, 270, 315};
     static constexpr double kTwoElevations[] = {5, 20};
@@ -190,9 +192,9 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     }
     const std::span<const double> elevations =
         v.elevations.empty() ? std::span<const double>(kTwoElevations) : std::span<const double>(v.elevations);
-    for (double b : bearings) {
+    for (double scale : {1.0, 0.85, 1.2}) {
       for (double e : elevations) {
-        for (double scale : {1.0, 0.85, 1.2}) add(aim + scale * v.distance * from_bearing(b, e), subject);
+        for (double b : bearings) add(aim + scale * v.distance * from_bearing(b, e), subject);
       }
     }
   };
