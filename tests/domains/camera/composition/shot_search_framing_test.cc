@@ -119,8 +119,7 @@ TEST(ShotSearchFraming, ScoreIsTheProblemsScoreWhetherTheCameraMovesOrOnlyTurns)
       "    - {kind: size, target: ann, range: [0.3, 0.5]}\n"
       "    - {kind: order, targets: [ann, ben]}\n",
       "three.yaml");
-  const CompositionProblem& owner = shot.owner;
-  shot_search_detail::Framing& framing = shot.framing;
+  const csp::Problem& problem = shot.owner.problem();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0, 1);
   shot_search_detail::Point x{0, 1.7, 4, 0, 0, 50, 0};
@@ -142,16 +141,16 @@ TEST(ShotSearchFraming, ScoreIsTheProblemsScoreWhetherTheCameraMovesOrOnlyTurns)
     } else {  // no view: every property scores 0
       x[5] = 0;
     }
-    const csp::Score fast = framing.score(x);
-    const csp::Score full = owner.problem().score(framing.values(x));
+    const csp::Score fast = shot.framing.score(x);
+    const csp::Score full = problem.score(shot.framing.values(x));
     ASSERT_EQ(fast.hard, full.hard) << trial;
     ASSERT_EQ(fast.soft, full.soft) << trial;
     if (kind >= 0.95) {
-      EXPECT_FALSE(View::of(owner.pose(framing.values(x)))) << trial;
+      EXPECT_FALSE(View::of(shot.owner.pose(shot.framing.values(x)))) << trial;
       x[5] = 50;
     }
     // The sequence is a real test of the kept terms: ann's sight lines change between moves.
-    const double visible = owner.problem().constraint_score(1, framing.values(x)).soft;
+    const double visible = problem.constraint_score(1, shot.framing.values(x)).soft;
     differing_visible += kind < 0.3 && visible != last_visible;
     last_visible = visible;
   }
