@@ -81,8 +81,9 @@ int main(int argc, char** argv) {
   std::string budgets_text = "0.5,1,2,5,20";
   std::string reference_solvers = "shot-search,particle-swarm,sls,toric>shot-search";
   std::string solver_list;
-  app.add_option("--problems", problems, "how many shot problems");
-  app.add_option("--first", first, "the first problem's seed (problems first..first+N-1)");
+  app.add_option("--problems", problems, "how many shot problems")->check(CLI::PositiveNumber);
+  app.add_option("--first", first, "the first problem's seed (problems first..first+N-1)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--reference-ms", reference_ms, "the reference budget");
   app.add_option("--budgets-ms", budgets_text, "budgets, comma-separated");
   app.add_option("--reference-solvers", reference_solvers, "solvers given the reference budget");
