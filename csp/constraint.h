@@ -23,6 +23,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sightline/csp/score.h"
+
 namespace sightline::csp {
 
 using VariableId = std::uint32_t;
@@ -138,6 +140,11 @@ class Constraint {
   void set_weight(double weight) { weight_ = weight; }
   bool is_hard() const { return hard_; }
   void set_hard(bool hard) { hard_ = hard; }
+  // The score of a violation of this constraint: weight x violation, hard or soft.
+  Score score_of(double violation) const {
+    const double weighted = weight_ * violation;
+    return hard_ ? Score{weighted, 0} : Score{0, weighted};
+  }
   // A human label ("height", "WA != NT"); empty means "kind + scope".
   const std::string& label() const { return label_; }
   void set_label(std::string label) { label_ = std::move(label); }

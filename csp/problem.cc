@@ -259,8 +259,7 @@ bool Problem::all_continuous() const {
 
 Score Problem::constraint_score(ConstraintId id, std::span<const double> values) const {
   const Constraint& c = *constraints_[id];
-  const double weighted = c.weight() * c.violation(values);
-  return c.is_hard() ? Score{weighted, 0} : Score{0, weighted};
+  return c.score_of(c.violation(values));
 }
 
 Score Problem::score(std::span<const double> values) const {
