@@ -22,31 +22,27 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
                  FramingStorage& storage)
     : problem_(&problem),
       owner_(&owner),
-      targets_(storage.targets),
-      excluded_(storage.excluded),
-      placed_(storage.placed),
-      values_(storage.values),
       storage_(storage) {
   const auto& people = owner.world().people();
-  targets_ = owner.wanted();
-  excluded_.clear();
+  storage_.targets = owner.wanted();
+  storage_.excluded.clear();
   for (const std::vector<int>& ts : owner.targets()) {
     for (int t : ts) {
-      if (std::find(targets_.begin(), targets_.end(), t) == targets_.end() &&
-          std::find(excluded_.begin(), excluded_.end(), t) == excluded_.end()) {
-        excluded_.push_back(t);
+      if (std::find(storage_.targets.begin(), storage_.targets.end(), t) == storage_.targets.end() &&
+          std::find(storage_.excluded.begin(), storage_.excluded.end(), t) == storage_.excluded.end()) {
+        storage_.excluded.push_back(t);
       }
     }
   }
-  placed_.clear();
+  storage_.placed.clear();
   const Shot& shot = owner.shot();
   for (std::size_t i = 0; i < shot.properties.size(); ++i) {
-    if (shot.properties[i].kind == "screen_position") placed_.push_back(i);
+    if (shot.properties[i].kind == "screen_position") storage_.placed.push_back(i);
   }
   centre_.setZero();
-  for (int t : targets_) centre_ += people[static_cast<std::size_t>(t)].aim;
-  centre_ /= static_cast<double>(std::max<std::size_t>(1, targets_.size()));
-  values_.resize(kDims);
+  for (int t : storage_.targets) centre_ += people[static_cast<std::size_t>(t)].aim;
+  centre_ /= static_cast<double>(std::max<std::size_t>(1, storage_.targets.size()));
+  storage_.values.resize(kDims);
   const std::size_t n = problem.num_constraints();
   storage_.properties.assign(n, nullptr);
   storage_.position_only.assign(n, 0);
@@ -77,8 +73,7 @@ csp::Score Framing::score(const Point& x) {
     }
     csp::Score term;
     if (const ShotPropertyConstraint* property = storage_.properties[id]) {
-      const double weighted = property->weight() * (1 - property->score(*view));
-      term = property->is_hard() ? csp::Score{weighted, 0} : csp::Score{0, weighted};
+      term = property->score_of(1 - property->score(*view));  // its violation, view shared
     } else {
       term = problem_->constraint_score(id, v);
     }
@@ -94,14 +89,14 @@ const csp::Assignment& Framing::values(const Point& x) {
   const Eigen::Vector3d d = centre_ - Eigen::Vector3d(x[0], x[1], x[2]);
   const double yaw = std::atan2(d.x(), d.z()) * kDegrees;
   const double pitch = std::atan2(d.y(), std::hypot(d.x(), d.z())) * kDegrees;
-  values_[0] = x[0];
-  values_[1] = x[1];
-  values_[2] = x[2];
-  values_[3] = signed_degrees(yaw + x[3]);
-  values_[4] = std::clamp(pitch + x[4], -89.0, 89.0);
-  values_[5] = x[5];
-  values_[6] = x[6];
-  return values_;
+  storage_.values[0] = x[0];
+  storage_.values[1] = x[1];
+  storage_.values[2] = x[2];
+  storage_.values[3] = signed_degrees(yaw + x[3]);
+  storage_.values[4] = std::clamp(pitch + x[4], -89.0, 89.0);
+  storage_.values[5] = x[5];
+  storage_.values[6] = x[6];
+  return storage_.values;
 }
 
 bool Framing::shifts_away(const Point& x, double beyond, std::array<double, 4>& shift) {
@@ -110,7 +105,7 @@ bool Framing::shifts_away(const Point& x, double beyond, std::array<double, 4>& 
   const auto& people = owner_->world().people();
   shift.fill(0);
   bool any = false;
-  for (int e : excluded_) {
+  for (int e : storage_.excluded) {
     const PersonAtTime& person = people[static_cast<std::size_t>(e)];
     const std::optional<Eigen::Vector2d> s = view->project(person.aim);
     if (!s || s->minCoeff() <= 0 || s->maxCoeff() >= 1) continue;
@@ -167,7 +162,7 @@ bool Framing::newton_on_aim(Point& x, int steps, double h, double tolerance, dou
 
 void Framing::aim(Point& x) {
   x[3] = x[4] = 0;
-  if (placed_.empty()) return;
+  if (storage_.placed.empty()) return;
   newton_on_aim(x, 6, 0.25, 1e-4, 30.0,
                 [this](const Point& y, Eigen::Vector2d& out) { return error(y, out); });
 }
@@ -197,7 +192,7 @@ bool Framing::error(const Point& x, Eigen::Vector2d& out) {
   out.setZero();
   int n = 0;
   const Shot& shot = owner_->shot();
-  for (std::size_t i : placed_) {
+  for (std::size_t i : storage_.placed) {
     const ShotProperty& p = shot.properties[i];
     const auto& person = owner_->world().people()[static_cast<std::size_t>(owner_->targets()[i][0])];
     const std::optional<Eigen::Vector2d> s = view->project(person.aim);

@@ -31,8 +31,8 @@ struct Vantage {
 // What a Framing works in, kept between solves so that a tracking camera's frames allocate
 // nothing once the vectors have grown.
 struct FramingStorage {
-  std::vector<int> targets;
-  std::vector<int> excluded;
+  std::vector<int> targets;   // the people the shot wants in the image
+  std::vector<int> excluded;  // people the shot keeps out who are not also wanted
   std::vector<std::size_t> placed;  // the shot's screen_position properties
   csp::Assignment values;
   // Per constraint of the problem: the shot property it is (nullptr for the others), whether
@@ -49,9 +49,9 @@ class Framing {
   // moved its people since the last).
   Framing(const csp::Problem& problem, const CompositionProblem& owner, FramingStorage& storage);
   const Eigen::Vector3d& centre() const { return centre_; }
-  const std::vector<int>& targets() const { return targets_; }
+  const std::vector<int>& targets() const { return storage_.targets; }
   // The shot's screen_position properties (their indices), in order.
-  const std::vector<std::size_t>& placed() const { return placed_; }
+  const std::vector<std::size_t>& placed() const { return storage_.placed; }
 
   // The assignment of a point: the aim offsets are relative to the direction to the centre.
   const csp::Assignment& values(const Point& x);
@@ -103,10 +103,6 @@ class Framing {
   const csp::Problem* problem_;
   const CompositionProblem* owner_;
   Eigen::Vector3d centre_;
-  std::vector<int>& targets_;
-  std::vector<int>& excluded_;  // people the shot keeps out who are not also wanted
-  std::vector<std::size_t>& placed_;
-  csp::Assignment& values_;
   FramingStorage& storage_;
   // Where storage_.at_position was scored (valid once has_position_ is set).
   Eigen::Vector3d scored_position_ = Eigen::Vector3d::Zero();
