@@ -43,10 +43,7 @@ void check_agile(experiments::AgileFamily family, std::uint64_t first, std::uint
     EXPECT_EQ(j.too_close, 0) << scene.name() << " (" << scene.description() << ")";
     EXPECT_EQ(j.unflagged, 0) << scene.name();
     // Cuts: never two within 1 s, at most 2 in any 60 s (from the trace, not the metrics).
-    std::vector<double> cuts;
-    for (const auto& row : r.trace) {
-      if (row.cut) cuts.push_back(row.t);
-    }
+    const std::vector<double> cuts = cut_times(r.trace);
     expect_within_cut_bound(scene.name(), cuts);
     const experiments::CameraRun arm = film(scene, "spring-arm", camera::kDefaultPreset);
     const experiments::CameraRun thesis = film(scene, "occlusion-octree", "thesis");
