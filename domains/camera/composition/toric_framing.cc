@@ -189,7 +189,9 @@ void ToricFraming::solve_into(const csp::Problem& problem, std::span<const doubl
         double g_hi = signed_degrees(roll_at[k + 1] - wanted_roll);
         if ((g_lo > 0) == (g_hi > 0) || std::abs(g_lo) > 90 || std::abs(g_hi) > 90) continue;
         double phi = (lo + hi) / 2;
-        int kept_side = 0;  // -1: lo kept twice running, +1: hi (its value is then halved)
+        // The end the last step kept (-1: lo, +1: hi); one kept twice running has its value
+        // halved (Illinois), so the estimate stops creeping up from one side.
+        int kept_side = 0;
         for (int step = 0; step < 60 && hi - lo > 1e-13; ++step) {
           phi = std::clamp(hi - g_hi * (hi - lo) / (g_hi - g_lo), lo, hi);
           const Oriented o = orient(place(phi), s, c1, c2);
