@@ -62,12 +62,16 @@ const solvers::OptionSchema<ShotSearch::Options>& ShotSearch::Options::schema() 
            "step (metres, degrees) below which the refinement stops (> 0)", 1e-9);
     s.boolean("global", &Options::global,
               "search the whole region (false: refine the start only, for tracking)");
+    s.boolean("hold_position", &Options::hold_position,
+              "with global false: refine the start's aim, fov and roll only, its position held");
     return s;
   }();
   return schema;
 }
 
-std::string ShotSearch::Options::validate() const { return ""; }
+std::string ShotSearch::Options::validate() const {
+  return hold_position && global ? "hold_position needs global=false (it refines a start's view)" : "";
+}
 
 ShotSearch::ShotSearch(std::string name, Options options) : name_(std::move(name)), options_(options) {}
 ShotSearch::~ShotSearch() = default;
@@ -270,8 +274,8 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   };
   // `polls`: random directions tried when no axis step pays, before the steps halve.
   auto refine = [&](csp::Score& score, Point& x, double scale, double min_step, int polls = 0) {
-    std::array<double, kDims> step{position_step * scale, position_step * scale,
-                                   position_step * scale, 4 * scale, 4 * scale,
+    const double move = options_.hold_position ? 0.0 : position_step * scale;
+    std::array<double, kDims> step{move, move, move, 4 * scale, 4 * scale,
                                    shot.fov.fixed() ? 0.0 : 4.0 * scale,
                                    shot.roll.fixed() ? 0.0 : 4.0 * scale};
     // Moves x to y (clamped into the domains) when y scores better.
@@ -391,7 +395,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   const double coarse_seconds = 0.7 * context.limits.time_limit_seconds;
   for (std::size_t i = 0; i < keep && !budget.exhausted(evaluations, iterations); ++i) {
     if (i > 0 && coarse_seconds > 0 && budget.elapsed_seconds() > coarse_seconds) break;
-    refine(candidates[i].first, candidates[i].second, options_.global ? 1.0 : 0.25, coarse);
+    refine(candidates[i].first, candidates[i].second, options_.global || options_.hold_position ? 1.0 : 0.25, coarse);
     if (i == 0 && leader_first && !budget.exhausted(evaluations, iterations)) {
       refine_finely();
       after_leader = best;

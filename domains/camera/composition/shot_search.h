@@ -54,6 +54,9 @@ class ShotSearch : public solvers::Solver {
     // false: only refine the start, with steps a quarter of the global ones (a tracking
     // camera's frame: the last pose is nearly right).
     bool global = true;
+    // true (with global false): the camera stays where the start is; only the aim offsets,
+    // fov and roll are refined (a tracking camera's look from where it is on its way).
+    bool hold_position = false;
 
     static const solvers::OptionSchema<Options>& schema();
     std::string validate() const;

@@ -30,11 +30,14 @@
 // pay for a whole global solve. The camera follows the aimed-for pose through two
 // first-order stages (the aimed-for pose low-passed, then a spring toward that; time
 // constant `smoothing` each), bounded by max_speed; the look direction, fov and roll alike
-// (on a long move, the look turned toward the point the aimed-for view centres at the
-// people's depth); a step that would end inside the shot's clearance is halved, else not
-// taken. When the camera's own pose breaks the shot while the aimed-for pose keeps it and
-// is out of one frame's smooth reach, it cuts there, never twice within
-// `min_shot_seconds`. Once warm, a frame allocates nothing.
+// (on a long move, more than kNearAim behind the aim, the look turned toward the point the
+// aimed-for view centres at the people's depth, then the aim, fov and roll refined from
+// where the camera is, framing everyone wanted first); a step that would end inside the
+// shot's clearance is halved, else not taken. When the camera's own pose breaks the shot
+// while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there,
+// never twice within `min_shot_seconds`; to a pose that keeps everyone for that long (the
+// foresight's horizons, the people forecast from their velocities) when the aimed-for pose
+// does not and a global solve finds one. Once warm, a frame allocates nothing.
 #pragma once
 
 #include <memory>
@@ -54,6 +57,10 @@ struct TrackingOptions {
   // wants (60 with two, 30 with four), at least 30.
   std::int64_t frame_people_evaluations = 120;
   std::uint64_t resolve_evaluations = 250;  // a global solve (a broken rule)
+  // On a long move, the camera's view refined from where it is (its aim, fov and roll;
+  // these evaluations a frame; 0: the low-passed aimed-for pose's view turned toward the
+  // people only). See move_toward in the .cc.
+  std::int64_t turn_evaluations = 40;
   // Sweep candidates scored each frame: this over the number of people the shot wants (32:
   // 16 candidates with two people, 8 with four), at least 4.
   std::int64_t sweep_people_per_frame = 32;
@@ -98,6 +105,10 @@ class TrackingCamera : public CameraController {
   void jump_to_aim();
   // Someone the shot wants framed and visible is not (a framed or visible property below 1).
   bool loses_someone(const ShotEvaluation& e) const;
+  // Whether `pose`, carried along with the wanted people's centre, keeps everyone wanted
+  // framed and visible at each foresight horizon (the people forecast from their velocities
+  // now). Leaves problem_ at the frame's time.
+  bool holds(const CameraPose& pose);
   Eigen::Vector3d wanted_centre() const;
   // The background sweep: candidate i round the people's centre; score the next `count`;
   // adopt the last full sweep's best when it beats the aim with foresight.
@@ -110,18 +121,21 @@ class TrackingCamera : public CameraController {
   CompositionProblem verdict_;   // the scene's own shot: FORMATS.md's verdict
   Shot shot_;                    // the shot worked to (see working_shot in the .cc)
   Shot aimed_shot_;              // shot_ with margins: the shot the poses are solved for
+  Shot turn_shot_;               // aimed_shot_ framing first: the view turned where the camera is
   CompositionProblem problem_;   // shot_ now: what a pose keeps or loses
   CompositionProblem refine_;    // aimed_shot_ now: the per-frame refinement
   CompositionProblem ahead_;     // aimed_shot_ with foresight: the sweep and the global solves
-  std::unique_ptr<solvers::Solver> local_, global_;
-  solvers::SolveContext local_context_, global_context_;
-  solvers::SolverResult result_;
+  CompositionProblem turn_;      // turn_shot_ now
+  std::unique_ptr<solvers::Solver> local_, global_, turner_;
+  solvers::SolveContext local_context_, global_context_, turn_context_;
+  solvers::SolverResult result_, turned_;
   csp::Assignment aim_;          // the pose aimed for, as the problem's assignment
   double aim_satisfaction_ = 0;  // of the last global solve
   CameraPose pose_;              // where the camera is
   CameraPose filtered_;          // the aimed-for pose low-passed (look_at: a unit direction)
   ShotEvaluation evaluation_;        // verdict_'s, of pose_
   ShotEvaluation aimed_, here_;      // problem_'s, of the aimed-for pose and of pose_
+  ShotEvaluation held_;              // problem_'s, of a pose carried on (holds())
   CameraFrame frame_;
   double t_ = 0, last_cut_t_ = -1e9;
   double resolves_ = 1;          // global solves due for a lost person (rationed)
