@@ -9,9 +9,9 @@
 // any 60 s (the default camera's profile calls for no cut by the thesis' rules, so every cut
 // counts), the running family too (seed 2 made 3 cuts in 17.6 s before the planner's ideal
 // shot candidate; seeds 1-5 made 3-10 each before the chase on her trail).
-// The share of frames with at least half the body visible and the jerk are printed
-// beside the spring arm's and the thesis camera's on the same walk, for the record
-// (docs/EXPERIMENTS.md, "The default camera against the thesis camera and the spring arm").
+// And the share of frames with at least half the body visible is held to the spring arm's
+// on the same walk, the jerk p99 to the thesis camera's (baselines.h), but on the walks
+// known to fall short, listed below.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -20,6 +20,7 @@
 #include "sightline/domains/camera/profile_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/sources/agile_families.h"
+#include "tests/domains/camera/control/baselines.h"
 #include "tests/domains/camera/control/cut_bound.h"
 #include "tests/domains/camera/control/family_checks.h"
 
@@ -32,6 +33,12 @@ experiments::CameraRun film(const camera::Scene& scene, const std::string& solve
   options.solver = solver;
   return experiments::run_camera(scene, camera::preset_profile(preset), options);
 }
+
+// The walks of seeds 1-5 known to fall short (measured 2026-11-27): the body on the
+// drop off a ledge (vertical-seed-2 95.0% against the arm's 99.2%, vertical-seed-4 95.8
+// against 98.2); the jerk of escapes (run-seed-3 12,785 m/s^3 against 230, orbit-seed-4 812
+// against 360).
+const KnownShortfalls kKnown{{"vertical-seed-2", "vertical-seed-4"}, {"run-seed-3", "orbit-seed-4"}};
 
 void check_agile(experiments::AgileFamily family, std::uint64_t first, std::uint64_t last) {
   for (std::uint64_t seed = first; seed <= last; ++seed) {
@@ -47,6 +54,9 @@ void check_agile(experiments::AgileFamily family, std::uint64_t first, std::uint
     expect_within_cut_bound(scene.name(), cuts);
     const experiments::CameraRun arm = film(scene, "spring-arm", camera::kDefaultPreset);
     const experiments::CameraRun thesis = film(scene, "occlusion-octree", "thesis");
+    expect_no_worse_than_baselines(scene.name(), r.metrics.body_half_visible_percent,
+                                   arm.metrics.body_half_visible_percent, r.metrics.jerk_p99,
+                                   thesis.metrics.jerk_p99, kKnown);
     std::printf("[agile] %-16s %5.1f s  cuts %zu  body half-visible %5.1f%% (arm %5.1f%%)  jerk p99 "
                 "%6.0f (thesis %6.0f)  (%s)\n",
                 scene.name().c_str(), j.seconds, cuts.size(), r.metrics.body_half_visible_percent,

@@ -9,7 +9,9 @@
 // flags (every cut, forced or discretionary) and must stay at or below 2 per minute of walk,
 // pooled over each family of scenes, and within issue 24's bound on EACH scene: at most 2 in
 // any 60 s, never two within 1 s. On each thesis scene and each of the issue's scenes
-// the anticipating camera's jerk p99 must not exceed the reactive camera's. On the shipped
+// the anticipating camera's jerk p99 must not exceed the reactive camera's, and it must show
+// half the body in as many frames as the spring arm (baselines.h), but on the scenes known
+// to fall short (kKnown). On the shipped
 // scenes the path camera (preset anticipating-path) is held to the same per-scene checks but
 // the jerk one. Jerk p99 of both cameras is printed per scene for the record (docs/studies/
 // 2026-11-24-anticipating-camera-results.md has the table).
@@ -28,6 +30,7 @@
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/runs/independent_check.h"
 #include "sightline/experiments/sources/scene_files.h"
+#include "tests/domains/camera/control/baselines.h"
 #include "tests/domains/camera/control/cut_bound.h"
 #include "sightline/experiments/sources/scene_generator.h"
 #include "sightline/experiments/runs/trace.h"
@@ -45,6 +48,7 @@ struct Judged {
   // counted as hidden, and reported.
   int swallowed = 0;
   double seconds = 0, jerk_p99 = 0;
+  double body = 0;  // % of frames with half the body visible (the metrics')
   // Every cut's time, in order, but those made while the look-at point is swallowed.
   std::vector<double> cut_times;
 };
@@ -62,6 +66,7 @@ Judged judge(const Scene& scene, const camera::ChaseCameraOptions& options,
   j.frames = static_cast<int>(run.trace.size());
   j.seconds = run.trace.back().t - run.trace.front().t;
   j.jerk_p99 = run.metrics.jerk_p99;
+  j.body = run.metrics.body_half_visible_percent;
   for (std::size_t i = 0; i < run.trace.size(); ++i) {
     const auto& row = run.trace[i];
     const bool hidden = experiments::segment_blocked(input, row.camera, row.target, row.t);
@@ -250,6 +255,12 @@ Scene crossings(std::uint64_t seed) {
 
 // --- the tests ------------------------------------------------------------------------------
 
+// Shipped scenes showing half the body less often than the spring arm (measured
+// 2026-11-27, % of frames): people-crossing 93.8 against 100 (passers-by 1-2 m behind her
+// hide her legs; the arm pushes in to 1.3 m), switchback 99.6 against 100, two-rooms 98.7
+// against 100.
+const KnownShortfalls kKnown{{"people-crossing", "switchback", "two-rooms"}, {}};
+
 // Every scene file in `folder` (under experiments/scenes), reactive beside anticipating;
 // returns the anticipating camera's cuts per minute over all of them. With
 // `jerk_no_worse`, each scene's jerk p99 (experiments/metrics, differences spanning a cut
@@ -270,9 +281,15 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
     Scene scene = camera::read_scene_file(path);
     const Judged a = run_anticipating(scene);
     expect_clean(scene, a);
-    if (jerk_no_worse) {
-      EXPECT_LE(a.jerk_p99, reactive_run.metrics.jerk_p99) << scene.name() << ": jerk p99";
-    }
+    Scene arm_scene = camera::read_scene_file(path);
+    arm_scene.set_profile(camera::preset_profile("anticipating"), "preset anticipating");
+    camera::ChaseCameraOptions arm_options;
+    arm_options.solver = "spring-arm";
+    const experiments::CameraRun arm = experiments::run_camera(arm_scene, arm_scene.profile(), arm_options);
+    expect_no_worse_than_baselines(scene.name(), a.body, arm.metrics.body_half_visible_percent,
+                                   a.jerk_p99,
+                                   jerk_no_worse ? reactive_run.metrics.jerk_p99 : a.jerk_p99,
+                                   kKnown);
     // The path camera (preset anticipating-path: the known future instead of a forecast,
     // the same planner) is held to the same per-scene visibility, clearance, jump and
     // cut checks. Not to the jerk check: the issue's jerk goal is the

@@ -11,7 +11,9 @@
 // visible in every frame, no frame within the clearance radius, no move longer than
 // max_speed x dt without the cut flag, and at most 2 discretionary cuts (any reason but
 // "visibility-lost") per minute of each walk; all cuts pooled over each family at most 2
-// per minute. The seeds are fixed: 1-20 of each family. Without the planner's trail
+// per minute; the share of frames with half the body visible held to the spring arm's on the
+// same walk and the jerk p99 to the thesis camera's (baselines.h), but on the walks known to
+// fall short (kKnown). The seeds are fixed: 1-20 of each family. Without the planner's trail
 // (horizon_planner.h) colonnade seed 6 and rooms seed 12 fail the discretionary-cut check.
 //
 // SIGHTLINE_FAMILIES_TABLE=N (N seeds per family) prints instead the table of
@@ -31,6 +33,7 @@
 #include "sightline/experiments/runs/metrics.h"
 #include "sightline/experiments/sources/scene_families.h"
 #include "sightline/experiments/runs/trace.h"
+#include "tests/domains/camera/control/baselines.h"
 #include "tests/domains/camera/control/family_checks.h"
 
 namespace sightline {
@@ -38,10 +41,11 @@ namespace {
 
 using experiments::SceneFamily;
 
-experiments::CameraRun run(camera::Scene& scene, const std::string& preset) {
+experiments::CameraRun run(camera::Scene& scene, const std::string& preset,
+                           const std::string& solver = "occlusion-octree") {
   scene.set_profile(camera::preset_profile(preset), "preset " + preset);
   camera::ChaseCameraOptions options;
-  options.solver = "occlusion-octree";
+  options.solver = solver;
   experiments::CameraRun r = experiments::run_camera(scene, scene.profile(), options);
   if (const char* dir = std::getenv("SIGHTLINE_FAMILIES_TRACES")) {
     experiments::write_trace_csv(std::string(dir) + "/" + scene.name() + "-" + preset + ".csv",
@@ -49,6 +53,22 @@ experiments::CameraRun run(camera::Scene& scene, const std::string& preset) {
   }
   return r;
 }
+
+// The walks of seeds 1-20 known to fall short (measured 2026-11-27; docs/EXPERIMENTS.md).
+// The body (default camera against spring arm, % of frames): colonnade 7 (98.9 / 100) and
+// 13 (99.8 / 100), corridor 6 (97.6 / 100) and 10 (95.9 / 100), rooms 2, 3, 4, 11 and 20
+// (96.2-99.9 / 100), stairs 18 (92.5 / 98.9), traffic 17 (99.7 / 100). The jerk p99
+// (default against thesis camera, m/s^3, escapes): colonnade 3 (19 / 17), 7 (5,678 / 312),
+// 19 (4,144 / 1,304) and 20 (331 / 236), corridor 2 (1,164 / 237), 5 (2,069 / 330), 8 (306
+// / 242) and 20 (336 / 221), rooms 6 (647 / 623), 7 (3,106 / 310) and 10 (35,235 / 267),
+// stairs 8 (2,099 / 223).
+const KnownShortfalls kKnown{
+    {"colonnade-seed-7", "colonnade-seed-13", "corridor-seed-6", "corridor-seed-10",
+     "rooms-seed-2", "rooms-seed-3", "rooms-seed-4", "rooms-seed-11", "rooms-seed-20",
+     "stairs-seed-18", "traffic-seed-17"},
+    {"colonnade-seed-3", "colonnade-seed-7", "colonnade-seed-19", "colonnade-seed-20",
+     "corridor-seed-2", "corridor-seed-5", "corridor-seed-8", "corridor-seed-20", "rooms-seed-6",
+     "rooms-seed-7", "rooms-seed-10", "stairs-seed-8"}};
 
 // The anticipating camera on `seeds` of `family`, every walk checked.
 void check_family(SceneFamily family, std::uint64_t first, std::uint64_t last) {
@@ -66,6 +86,12 @@ void check_family(SceneFamily family, std::uint64_t first, std::uint64_t last) {
     EXPECT_LE(j.discretionary, 2.0 * j.seconds / 60.0)
         << scene.name() << ": " << j.discretionary << " discretionary cuts in " << j.seconds
         << " s";
+    camera::Scene baseline = experiments::generate_family(family, seed);
+    const experiments::CameraRun arm = run(baseline, "anticipating", "spring-arm");
+    const experiments::CameraRun thesis = run(baseline, "thesis");
+    expect_no_worse_than_baselines(scene.name(), r.metrics.body_half_visible_percent,
+                                   arm.metrics.body_half_visible_percent, r.metrics.jerk_p99,
+                                   thesis.metrics.jerk_p99, kKnown);
     cuts += j.cuts;
     seconds += j.seconds;
     std::printf("[families] %-22s %5.1f s  cuts %d  hidden %d  jerk p99 %.0f  (%s)\n",

@@ -4,7 +4,9 @@
 // inside solid matter or outside the world, every jump flagged as a cut. The judge is
 // independent_judge.h (a brute-force grid of its own over the level's triangles, not Embree),
 // never the controller's own flag. The default camera's cuts are held to issue 24's bound
-// (never two within 1 s, at most 2 in any 60 s), but on the one walk known to break it.
+// (never two within 1 s, at most 2 in any 60 s), but on the one walk known to break it;
+// the share of frames with half the body visible to the spring arm's on the same walk, and
+// the jerk p99 to the thesis camera's (baselines.h), but on the walks known to fall short.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -16,6 +18,8 @@
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/sources/scene_files.h"
+#include "sightline/domains/camera/profile_file.h"
+#include "tests/domains/camera/control/baselines.h"
 #include "tests/domains/camera/control/cut_bound.h"
 #include "tests/domains/camera/control/independent_judge.h"
 
@@ -32,6 +36,11 @@ std::vector<std::string> level_walks() {
   }
   return out;
 }
+
+// Measured 2026-11-27: half the body on oa_thor-walk2, 3 and 5 (98.0, 96.5 and 98.5%
+// against the arm's 99.5, 98.9 and 99.8: pillars and ledges that hide the legs), and the
+// jerk of oa_thor-walk3 (327 against 296 m/s^3: escapes round its pillars).
+const KnownShortfalls kKnown{{"oa_thor-walk2", "oa_thor-walk3", "oa_thor-walk5"}, {"oa_thor-walk3"}};
 
 class OcclusionOctreeOnLevelWalk : public ::testing::TestWithParam<std::string> {};
 
@@ -58,6 +67,14 @@ TEST_P(OcclusionOctreeOnLevelWalk, KeepsTheCharacterVisibleAndTheCameraInTheOpen
   } else {
     expect_within_cut_bound(GetParam(), cuts);
   }
+  camera::ChaseCameraOptions arm_options;
+  arm_options.solver = "spring-arm";
+  const experiments::CameraRun arm = experiments::run_camera(scene, scene.profile(), arm_options);
+  const experiments::CameraRun thesis =
+      experiments::run_camera(scene, camera::preset_profile("thesis"), options);
+  expect_no_worse_than_baselines(GetParam(), run.metrics.body_half_visible_percent,
+                                 arm.metrics.body_half_visible_percent, run.metrics.jerk_p99,
+                                 thesis.metrics.jerk_p99, kKnown);
   const auto& m = run.metrics;
   std::printf("%s: %d frames, %d cuts, visible fraction %.2f, distance dev %.2f m, solve p99 %.0f us\n",
               GetParam().c_str(), m.frames, m.cuts, m.visible_fraction_mean,
