@@ -204,31 +204,6 @@ bool TrackingCamera::loses_someone(const ShotEvaluation& e) const {
   return false;
 }
 
-bool TrackingCamera::holds(const CameraPose& pose) {
-  const auto centre = [this] {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int w : problem_.wanted()) c += problem_.world().people()[static_cast<std::size_t>(w)].aim;
-    return Eigen::Vector3d(c / static_cast<double>(problem_.wanted().size()));
-  };
-  problem_.set_time(t_);
-  const Eigen::Vector3d now = centre();
-  bool kept = true;
-  for (double h : options_.foresight.horizons) {
-    problem_.set_time(t_, h);
-    const Eigen::Vector3d shift = centre() - now;
-    CameraPose moved = pose;
-    moved.position += shift;
-    moved.look_at += shift;
-    problem_.evaluate_into(moved, held_);
-    if (!held_.feasible || loses_someone(held_)) {
-      kept = false;
-      break;
-    }
-  }
-  problem_.set_time(t_);
-  return kept;
-}
-
 void TrackingCamera::move_toward(double dt) {
   // Two first-order stages: the aimed-for pose is low-passed (the local solve's answer moves
   // in small discrete steps from frame to frame), and the camera follows that, so neither
@@ -318,7 +293,6 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
       turn_.set_time(t_);
       turner_->solve_into(turn_.problem(), aim_, turn_context_, turned_);
     }
-    holds(pose_);  // likewise the check a cut's destination gets
     started_ = true;
     last_cut_t_ = t_;  // the film starts a shot: no cut within its minimum length either
   } else {
@@ -362,22 +336,6 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
         t_ - last_cut_t_ >= options_.min_shot_seconds) {
       problem_.evaluate_into(aim, aimed_);
       if (aimed_.feasible && !loses_someone(aimed_)) {
-        if (!holds(aim)) {
-          // No second cut can come within the shot's minimum length: a destination that
-          // keeps everyone for that long is worth a global solve, when one finds it.
-          std::array<double, 7> kept;
-          std::copy(aim_.begin(), aim_.end(), kept.begin());
-          const double kept_satisfaction = aim_satisfaction_;
-          const bool kept_loses = global_loses_;
-          solve_globally(options_.resolve_evaluations);
-          const CameraPose found = problem_.pose(aim_);
-          problem_.evaluate_into(found, aimed_);
-          if (!aimed_.feasible || loses_someone(aimed_) || !holds(found)) {
-            std::copy(kept.begin(), kept.end(), aim_.begin());
-            aim_satisfaction_ = kept_satisfaction;
-            global_loses_ = kept_loses;
-          }
-        }
         jump_to_aim();
         frame_.cut = true;
         frame_.cut_reason = CutReason::kVisibilityLost;

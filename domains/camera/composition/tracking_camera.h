@@ -35,9 +35,7 @@
 // where the camera is, framing everyone wanted first); a step that would end inside the
 // shot's clearance is halved, else not taken. When the camera's own pose breaks the shot
 // while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there,
-// never twice within `min_shot_seconds`; to a pose that keeps everyone for that long (the
-// foresight's horizons, the people forecast from their velocities) when the aimed-for pose
-// does not and a global solve finds one. Once warm, a frame allocates nothing.
+// never twice within `min_shot_seconds`. Once warm, a frame allocates nothing.
 #pragma once
 
 #include <memory>
@@ -105,10 +103,6 @@ class TrackingCamera : public CameraController {
   void jump_to_aim();
   // Someone the shot wants framed and visible is not (a framed or visible property below 1).
   bool loses_someone(const ShotEvaluation& e) const;
-  // Whether `pose`, carried along with the wanted people's centre, keeps everyone wanted
-  // framed and visible at each foresight horizon (the people forecast from their velocities
-  // now). Leaves problem_ at the frame's time.
-  bool holds(const CameraPose& pose);
   Eigen::Vector3d wanted_centre() const;
   // The background sweep: candidate i round the people's centre; score the next `count`;
   // adopt the last full sweep's best when it beats the aim with foresight.
@@ -135,7 +129,6 @@ class TrackingCamera : public CameraController {
   CameraPose filtered_;          // the aimed-for pose low-passed (look_at: a unit direction)
   ShotEvaluation evaluation_;        // verdict_'s, of pose_
   ShotEvaluation aimed_, here_;      // problem_'s, of the aimed-for pose and of pose_
-  ShotEvaluation held_;              // problem_'s, of a pose carried on (holds())
   CameraFrame frame_;
   double t_ = 0, last_cut_t_ = -1e9;
   double resolves_ = 1;          // global solves due for a lost person (rationed)
