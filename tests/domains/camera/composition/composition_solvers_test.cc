@@ -203,6 +203,11 @@ TEST(CompositionSolvers, ShotSearchFollowsTheRimOfAScreenPositionToTheOptimum) {
   const ShotEvaluation e = problem.evaluate(problem.pose(shot_search(problem, 4000)));
   ASSERT_TRUE(e.feasible) << e.why_infeasible;
   EXPECT_GT(e.satisfaction, 0.9581) << "ann " << e.measures[2] << ", ben " << e.measures[3];
+  // With 1,500 evaluations (what 2 ms gives on the 2-core VM): stepping an axis up and down,
+  // each re-hold of a person on screen scoring 5e-8 to 1e-7 better, took 750 of them and
+  // left it at 0.95799 (held axis moves may not go straight back).
+  const ShotEvaluation quick = problem.evaluate(problem.pose(shot_search(problem, 1500)));
+  EXPECT_GT(quick.satisfaction, 0.9581);
 }
 
 // shot-search holding the camera's position (a tracking camera's view turned from where it
