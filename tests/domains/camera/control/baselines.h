@@ -23,25 +23,27 @@ struct KnownShortfalls {
   std::set<std::string> jerk;  // runs with a higher jerk p99 than the thesis camera
 };
 
+// One comparison of `run`: `met` whether it holds, `known` whether the run is listed as
+// falling short of it; `what` says which, with the two figures.
+inline void expect_comparison(const std::string& run, bool known, bool met, const std::string& what,
+                              double value, double baseline) {
+  if (known) {
+    EXPECT_FALSE(met) << run << ": " << what << ": " << value << " against " << baseline
+                      << ", met now: drop it from the known shortfalls";
+  } else {
+    EXPECT_TRUE(met) << run << ": " << what << ": " << value << " against " << baseline;
+  }
+}
+
 // `body` and `arm_body`: percent of frames with at least half the body visible (the
 // default camera's, the spring arm's); `jerk` and `thesis_jerk`: jerk p99, m/s^3.
 inline void expect_no_worse_than_baselines(const std::string& run, double body, double arm_body,
                                            double jerk, double thesis_jerk,
                                            const KnownShortfalls& known) {
-  if (known.body.count(run) > 0) {
-    EXPECT_LT(body, arm_body) << run << ": shows half the body as often as the spring arm "
-                              << "now: drop it from the known shortfalls";
-  } else {
-    EXPECT_GE(body, arm_body) << run << ": frames with half the body visible (%), against the "
-                              << "spring arm's on the same walk";
-  }
-  if (known.jerk.count(run) > 0) {
-    EXPECT_GT(jerk, thesis_jerk) << run << ": no jerkier than the thesis camera now: drop it "
-                                 << "from the known shortfalls";
-  } else {
-    EXPECT_LE(jerk, thesis_jerk) << run << ": jerk p99 (m/s^3), against the thesis camera's "
-                                 << "on the same walk";
-  }
+  expect_comparison(run, known.body.count(run) > 0, body >= arm_body,
+                    "% of frames with half the body visible, against the spring arm's", body, arm_body);
+  expect_comparison(run, known.jerk.count(run) > 0, jerk <= thesis_jerk,
+                    "jerk p99 (m/s^3), against the thesis camera's", jerk, thesis_jerk);
 }
 
 }  // namespace sightline
