@@ -1,6 +1,7 @@
 #include "sightline/domains/camera/composition/tracking_camera.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -336,6 +337,19 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
         t_ - last_cut_t_ >= options_.min_shot_seconds) {
       problem_.evaluate_into(aim, aimed_);
       if (aimed_.feasible && !loses_someone(aimed_)) {
+        // The cut goes to the last sweep's best instead when it does better with foresight
+        // (the aimed-for pose is refined frame by frame for the present alone) and keeps
+        // everyone now: no second cut can come within the shot's minimum length.
+        std::array<double, 7> kept;
+        std::copy(aim_.begin(), aim_.end(), kept.begin());
+        if (take_sweep_best()) {
+          problem_.evaluate_into(problem_.pose(aim_), aimed_);
+          if (aimed_.feasible && !loses_someone(aimed_)) {
+            aim_satisfaction_ = aimed_.satisfaction;
+          } else {
+            std::copy(kept.begin(), kept.end(), aim_.begin());
+          }
+        }
         jump_to_aim();
         frame_.cut = true;
         frame_.cut_reason = CutReason::kVisibilityLost;

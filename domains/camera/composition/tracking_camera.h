@@ -34,8 +34,9 @@
 // aimed-for view centres at the people's depth, then the aim, fov and roll refined from
 // where the camera is, framing everyone wanted first); a step that would end inside the
 // shot's clearance is halved, else not taken. When the camera's own pose breaks the shot
-// while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there,
-// never twice within `min_shot_seconds`. Once warm, a frame allocates nothing.
+// while the aimed-for pose keeps it and is out of one frame's smooth reach, it cuts there
+// (or to the last sweep's best, when that does better with foresight and keeps everyone
+// now), never twice within `min_shot_seconds`. Once warm, a frame allocates nothing.
 #pragma once
 
 #include <memory>
