@@ -315,14 +315,9 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       for (Point from = base; options_.global && improved && !budget.exhausted(evaluations, iterations);) {
         Point y;
         for (std::size_t k = 0; k < y.size(); ++k) y[k] = x[k] + (x[k] - from[k]);
-        clamp(y);
-        if (y == x) break;
-        const csp::Score s = framing.score(y);
-        ++evaluations;
-        if (!s.better_than(score)) break;
-        from = x;
-        x = y;
-        score = s;
+        const Point was = x;
+        if (!moved_to(y)) break;
+        from = was;
       }
       keep_best(score, x);
       if (improved) {
