@@ -348,6 +348,7 @@ const CameraFrame& TrackingCamera::update(const CharacterState& character, doubl
             aim_satisfaction_ = aimed_.satisfaction;
           } else {
             std::copy(kept.begin(), kept.end(), aim_.begin());
+            problem_.evaluate_into(problem_.pose(aim_), aimed_);  // aimed_ is the aim's again
           }
         }
         jump_to_aim();
