@@ -52,8 +52,8 @@ void check_agile(experiments::AgileFamily family, std::uint64_t first, std::uint
     // Cuts: never two within 1 s, at most 2 in any 60 s (from the trace, not the metrics).
     const std::vector<double> cuts = cut_times(r.trace);
     expect_within_cut_bound(scene.name(), cuts);
-    const experiments::CameraRun arm = film(scene, "spring-arm", camera::kDefaultPreset);
-    const experiments::CameraRun thesis = film(scene, "occlusion-octree", "thesis");
+    const experiments::CameraRun arm = spring_arm_run(scene, camera::preset_profile(camera::kDefaultPreset));
+    const experiments::CameraRun thesis = thesis_run(scene);
     expect_no_worse_than_baselines(scene.name(), r.metrics.body_half_visible_percent,
                                    arm.metrics.body_half_visible_percent, r.metrics.jerk_p99,
                                    thesis.metrics.jerk_p99, kKnown);

@@ -262,12 +262,12 @@ Scene crossings(std::uint64_t seed) {
 const KnownShortfalls kKnown{{"people-crossing", "switchback", "two-rooms"}, {}};
 
 // Every scene file in `folder` (under experiments/scenes), reactive beside anticipating;
-// returns the anticipating camera's cuts per minute over all of them. With
-// `jerk_no_worse`, each scene's jerk p99 (experiments/metrics, differences spanning a cut
-// skipped, the same computation for both cameras) must not exceed the reactive camera's:
-// the issue's "jerk p99 no worse than today's on the thesis scenes", with no tolerance
-// (both runs are deterministic: same solver, same seed).
-double run_shipped(const std::string& folder, bool jerk_no_worse) {
+// returns the anticipating camera's cuts per minute over all of them. Each scene's jerk
+// p99 (experiments/metrics, differences spanning a cut skipped, the same computation for
+// both cameras) must not exceed the reactive camera's: the issue's "jerk p99 no worse than
+// today's on the thesis scenes", with no tolerance (both runs are deterministic: same
+// solver, same seed).
+double run_shipped(const std::string& folder) {
   const auto files = experiments::scene_files(std::string(SIGHTLINE_SOURCE_DIR) +
                                               "/experiments/scenes" + folder);
   EXPECT_FALSE(files.empty());
@@ -281,15 +281,9 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
     Scene scene = camera::read_scene_file(path);
     const Judged a = run_anticipating(scene);
     expect_clean(scene, a);
-    Scene arm_scene = camera::read_scene_file(path);
-    arm_scene.set_profile(camera::preset_profile("anticipating"), "preset anticipating");
-    camera::ChaseCameraOptions arm_options;
-    arm_options.solver = "spring-arm";
-    const experiments::CameraRun arm = experiments::run_camera(arm_scene, arm_scene.profile(), arm_options);
+    const experiments::CameraRun arm = spring_arm_run(scene, scene.profile());
     expect_no_worse_than_baselines(scene.name(), a.body, arm.metrics.body_half_visible_percent,
-                                   a.jerk_p99,
-                                   jerk_no_worse ? reactive_run.metrics.jerk_p99 : a.jerk_p99,
-                                   kKnown);
+                                   a.jerk_p99, reactive_run.metrics.jerk_p99, kKnown);
     // The path camera (preset anticipating-path: the known future instead of a forecast,
     // the same planner) is held to the same per-scene visibility, clearance, jump and
     // cut checks. Not to the jerk check: the issue's jerk goal is the
@@ -309,7 +303,7 @@ double run_shipped(const std::string& folder, bool jerk_no_worse) {
 }
 
 TEST(AnticipatingCamera, OnEveryThesisSceneKeepsTheLookAtVisibleClearAndCutsRarely) {
-  EXPECT_LE(run_shipped("", /*jerk_no_worse=*/true), 2.0);
+  EXPECT_LE(run_shipped(""), 2.0);
 }
 
 // The issue's scenes (experiments/scenes/anticipation/: switchback, colonnade, people
@@ -318,7 +312,7 @@ TEST(AnticipatingCamera, OnEveryThesisSceneKeepsTheLookAtVisibleClearAndCutsRare
 // between camera and character, escaping frame by frame through the closing gap made it
 // 6,802 m/s^3 against 600 (cuts.cut_ahead cuts there instead).
 TEST(AnticipatingCamera, OnTheIssuesMoverScenesKeepsTheLookAtVisibleClearAndCutsRarely) {
-  EXPECT_LE(run_shipped("/anticipation", /*jerk_no_worse=*/true), 2.0);
+  EXPECT_LE(run_shipped("/anticipation"), 2.0);
 }
 
 TEST(AnticipatingCamera, OnSeededSwitchbacksKeepsTheLookAtVisibleClearAndCutsRarely) {

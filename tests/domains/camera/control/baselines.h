@@ -16,6 +16,9 @@
 #include <set>
 #include <string>
 
+#include "sightline/domains/camera/profile_file.h"
+#include "sightline/experiments/runs/camera_run.h"
+
 namespace sightline {
 
 struct KnownShortfalls {
@@ -44,6 +47,20 @@ inline void expect_no_worse_than_baselines(const std::string& run, double body, 
                     "% of frames with half the body visible, against the spring arm's", body, arm_body);
   expect_comparison(run, known.jerk.count(run) > 0, jerk <= thesis_jerk,
                     "jerk p99 (m/s^3), against the thesis camera's", jerk, thesis_jerk);
+}
+
+// The baselines filming `scene`: the spring arm under `profile` (the default camera's), and
+// the thesis' reactive camera (preset `thesis`, occlusion-octree).
+inline experiments::CameraRun spring_arm_run(const camera::Scene& scene,
+                                             const camera::CameraProfile& profile) {
+  camera::ChaseCameraOptions options;
+  options.solver = "spring-arm";
+  return experiments::run_camera(scene, profile, options);
+}
+inline experiments::CameraRun thesis_run(const camera::Scene& scene) {
+  camera::ChaseCameraOptions options;
+  options.solver = "occlusion-octree";
+  return experiments::run_camera(scene, camera::preset_profile("thesis"), options);
 }
 
 }  // namespace sightline

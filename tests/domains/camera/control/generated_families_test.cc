@@ -41,11 +41,10 @@ namespace {
 
 using experiments::SceneFamily;
 
-experiments::CameraRun run(camera::Scene& scene, const std::string& preset,
-                           const std::string& solver = "occlusion-octree") {
+experiments::CameraRun run(camera::Scene& scene, const std::string& preset) {
   scene.set_profile(camera::preset_profile(preset), "preset " + preset);
   camera::ChaseCameraOptions options;
-  options.solver = solver;
+  options.solver = "occlusion-octree";
   experiments::CameraRun r = experiments::run_camera(scene, scene.profile(), options);
   if (const char* dir = std::getenv("SIGHTLINE_FAMILIES_TRACES")) {
     experiments::write_trace_csv(std::string(dir) + "/" + scene.name() + "-" + preset + ".csv",
@@ -86,9 +85,8 @@ void check_family(SceneFamily family, std::uint64_t first, std::uint64_t last) {
     EXPECT_LE(j.discretionary, 2.0 * j.seconds / 60.0)
         << scene.name() << ": " << j.discretionary << " discretionary cuts in " << j.seconds
         << " s";
-    camera::Scene baseline = experiments::generate_family(family, seed);
-    const experiments::CameraRun arm = run(baseline, "anticipating", "spring-arm");
-    const experiments::CameraRun thesis = run(baseline, "thesis");
+    const experiments::CameraRun arm = spring_arm_run(scene, scene.profile());
+    const experiments::CameraRun thesis = thesis_run(scene);
     expect_no_worse_than_baselines(scene.name(), r.metrics.body_half_visible_percent,
                                    arm.metrics.body_half_visible_percent, r.metrics.jerk_p99,
                                    thesis.metrics.jerk_p99, kKnown);

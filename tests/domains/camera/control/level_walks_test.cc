@@ -18,7 +18,6 @@
 #include "sightline/domains/camera/scene_file.h"
 #include "sightline/experiments/runs/camera_run.h"
 #include "sightline/experiments/sources/scene_files.h"
-#include "sightline/domains/camera/profile_file.h"
 #include "tests/domains/camera/control/baselines.h"
 #include "tests/domains/camera/control/cut_bound.h"
 #include "tests/domains/camera/control/independent_judge.h"
@@ -67,11 +66,8 @@ TEST_P(OcclusionOctreeOnLevelWalk, KeepsTheCharacterVisibleAndTheCameraInTheOpen
   } else {
     expect_within_cut_bound(GetParam(), cuts);
   }
-  camera::ChaseCameraOptions arm_options;
-  arm_options.solver = "spring-arm";
-  const experiments::CameraRun arm = experiments::run_camera(scene, scene.profile(), arm_options);
-  const experiments::CameraRun thesis =
-      experiments::run_camera(scene, camera::preset_profile("thesis"), options);
+  const experiments::CameraRun arm = spring_arm_run(scene, scene.profile());
+  const experiments::CameraRun thesis = thesis_run(scene);
   expect_no_worse_than_baselines(GetParam(), run.metrics.body_half_visible_percent,
                                  arm.metrics.body_half_visible_percent, run.metrics.jerk_p99,
                                  thesis.metrics.jerk_p99, kKnown);
