@@ -233,19 +233,50 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       waypoint ? Eigen::Vector3d(*waypoint - target) : Eigen::Vector3d::Zero(),
       Eigen::Vector3d::Zero()};
 
+  // The ideal shot of a character who turns as she walks (a curve, a lap round a pillar):
+  // where the shot will be `ahead` seconds on if she keeps her pace and her turn rate (the
+  // forecast's: her velocity turned with her facing, as MotionPrediction turns it), the shot
+  // turned with her. Carried on along its present velocity instead, the shot of a
+  // character circling a pillar runs off along the tangent, outside her circle, and the
+  // camera lagged a quarter lap behind her until a stuck cut (seeds 201-220 of the orbit
+  // family: 14 cuts in 210 s).
+  const CharacterState& her = problem_->character();
+  Eigen::Vector3d pace = her.velocity;
+  pace.y() = 0;
+  const double turn_rate = problem_->prediction().turn_rate();  // degrees per second
+  const bool turning = problem_->prediction().size() > 0 && pace.norm() > kTurningPace &&
+                       std::abs(turn_rate) > kTurningRate;
+  const EffectiveProfile& shot = problem_->effective();
+  auto ideal_turning = [&](double ahead) -> Eigen::Vector3d {
+    const double w = turn_rate * M_PI / 180.0;  // rad/s, not 0 (turning)
+    const double a = std::clamp(w * ahead, -M_PI, M_PI);
+    // Her velocity turned by w t integrates to `along` it and `across` it, across being the
+    // velocity turned a quarter turn the way yaw turns (turned() in motion_prediction.cc).
+    const double along = std::sin(a) / w, across = (1 - std::cos(a)) / w;
+    const Eigen::Vector3d side(pace.z(), 0, -pace.x());
+    CharacterState then = her;
+    then.position = her.position + along * pace + across * side;
+    then.yaw = her.yaw + a * 180.0 / M_PI;
+    return ideal_camera_position(then, shot.desired_height, shot.desired_distance,
+                                 shot.desired_orientation);
+  };
   // Where candidate i's goal is `ahead` seconds from now (the target keeps moving), and
   // how fast it moves then; the smooth stop comes to rest ahead of the camera.
   auto goal_of = [&](int i, double ahead) -> Eigen::Vector3d {
     if (i == kStop) return now.position + 0.5 * plan_seconds_ * now.velocity;
     if (i == kTrail) return *waypoint + ahead * trail_velocity;  // on along her path
     if (i == kChase) return *chase + ahead * chase_velocity;
-    if (i == kIdeal) return ideal + ahead * ideal_velocity_;
+    if (i == kIdeal) return turning ? ideal_turning(ahead) : ideal + ahead * ideal_velocity_;
     return target + offsets[static_cast<std::size_t>(i)] + ahead * target_velocity;
   };
-  auto velocity_of = [&](int i) -> Eigen::Vector3d {
+  auto velocity_of = [&](int i, double at) -> Eigen::Vector3d {
     if (i == kTrail) return trail_velocity;
     if (i == kChase) return chase_velocity;
-    if (i == kIdeal) return ideal_velocity_;
+    if (i == kIdeal) {
+      if (!turning) return ideal_velocity_;
+      constexpr double e = 1e-3;  // s: the shot's velocity by central differences
+      return Eigen::Vector3d((ideal_turning(at + e) - ideal_turning(at - e)) / (2 * e));
+    }
     return i == kStop ? Eigen::Vector3d::Zero() : target_velocity;
   };
   const csp::Problem& problem = problem_->problem();
@@ -276,7 +307,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     const double d = (goal - now.position).norm();
     durations[u] = std::max({plan_seconds_, 1.875 * d / (0.9 * max_speed_),
                              std::sqrt(5.77 * d / (0.9 * max_acceleration_))});
-    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
     const double jerk = (q.acceleration(dt) - now.acceleration).norm() / dt;
     // Framing is priced where the goal is now, against this frame's character; the trail's
     // where it leads, the ideal shot behind her (its waypoint is a way, not a shot).
@@ -304,7 +335,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   for (int i : order) {
     const auto u = static_cast<std::size_t>(i);
     if (!(cheap[u] < best_cost)) break;  // sorted: nothing after can win either
-    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
     // The first frame must be a smooth, usable move.
     Eigen::Vector3d first = q.position(dt);
     Eigen::Vector3d first_velocity = q.velocity(dt);
@@ -429,7 +460,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       if (!std::isfinite(cheap[u])) continue;
       const MotionPrediction::Sample& first = prediction.sample(0);
       const SceneAtTime& g = prediction.geometry(0);
-      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i), durations[u]);
+      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
       const Eigen::Vector3d x = q.position(std::max(first.ahead, dt));
       regains_sight_ = has_room(g, x, radius) && g.line_of_sight(x, first.look_at);
     }

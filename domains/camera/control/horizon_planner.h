@@ -39,7 +39,11 @@
 //          led the camera off into corners of rooms it then had to cut its way out of.
 //          And, while it has room and sees her look-at point, the ideal shot itself (the
 //          profile's height, distance and orientation from her), moving at the velocity it
-//          has had (low-passed over kIdealSmoothing, at most max_speed). The solver's
+//          has had (low-passed over kIdealSmoothing, at most max_speed); while she walks and
+//          turns (kTurningPace, kTurningRate), where it will be if she keeps her pace and
+//          turn rate, turned with her (carried on along the tangent, the shot of a character
+//          circling a pillar ran off outside her circle, and the camera lagged a quarter lap
+//          behind until a stuck cut). The solver's
 //          target is searched within the search cube around the camera and low-passed, so
 //          a goal built on it moves at most a few metres a second toward a shot that
 //          moves faster: round a character who circles a pillar, turns on the spot or
@@ -101,6 +105,10 @@ class HorizonPlanner {
   static constexpr double kRunningSpeed = 4.0;
   // Seconds: time constant of the low-pass on the ideal shot's velocity.
   static constexpr double kIdealSmoothing = 0.1;
+  // Walking faster than kTurningPace (m/s) and turning faster than kTurningRate (degrees
+  // per second), her ideal shot is carried on along her turn (see plan()).
+  static constexpr double kTurningPace = 1.0;
+  static constexpr double kTurningRate = 5.0;
   // Cost per m/s^3 of jerk over the first frame: 300 m/s^3 (about the reactive camera's
   // p99) costs what 0.3 m off the desired distance costs.
   static constexpr double kJerkPrice = 1e-3;
