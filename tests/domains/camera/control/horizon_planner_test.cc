@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "sightline/domains/camera/camera_problem.h"
@@ -40,6 +41,18 @@ bool segment_meets_box(const Vector3d& a, const Vector3d& b, const Vector3d& lo,
 
 double distance_to_box(const Vector3d& p, const Vector3d& lo, const Vector3d& hi) {
   return experiments::distance_to_geometry({{lo, hi}}, p);
+}
+
+// One frame at time t of a scene's walk, planned from `state` toward a target that stays at
+// `target` (a solver's target that lags her).
+std::optional<HorizonPlanner::State> plan_with_still_target(const Scene& scene, CameraProblem& cp,
+                                                            HorizonPlanner& planner,
+                                                            const HorizonPlanner::State& state,
+                                                            const Vector3d& target, double t,
+                                                            double dt) {
+  const CharacterState c = scene.character_at(t);
+  cp.set_frame(c, state.position, dt);
+  return planner.plan(state, target, Vector3d::Zero(), scene.character().look_at(c.position), dt);
 }
 
 TEST(HorizonPlanner, PlansEveryFrameWithoutAllocating) {
@@ -218,10 +231,7 @@ TEST(HorizonPlanner, FollowsTheIdealShotWhereTheTargetLagsAndNotIntoAWall) {
     HorizonPlanner::State state{start, Vector3d::Zero(), Vector3d::Zero()};
     const double r = cp.profile().clearance_radius;
     for (int frame = 0; frame <= 180; ++frame) {
-      const CharacterState c = scene.character_at(frame * dt);
-      cp.set_frame(c, state.position, dt);
-      const Vector3d look = scene.character().look_at(c.position);
-      const auto next = planner.plan(state, start, Vector3d::Zero(), look, dt);
+      const auto next = plan_with_still_target(scene, cp, planner, state, start, frame * dt, dt);
       ASSERT_TRUE(next.has_value()) << "frame " << frame;
       if (wall) {
         EXPECT_GE(distance_to_box(next->position, lo, hi), r - 1e-9) << "frame " << frame;
@@ -263,10 +273,7 @@ TEST(HorizonPlanner, KeepsTheIdealShotOfACharacterWalkingACircle) {
   double worst = 0, off_circle = 0;
   int counted = 0;
   for (int frame = 0; frame <= 540; ++frame) {
-    const CharacterState c = scene.character_at(frame * dt);
-    cp.set_frame(c, state.position, dt);
-    const Vector3d look = scene.character().look_at(c.position);
-    const auto next = planner.plan(state, start, Vector3d::Zero(), look, dt);
+    const auto next = plan_with_still_target(scene, cp, planner, state, start, frame * dt, dt);
     ASSERT_TRUE(next.has_value()) << "frame " << frame;
     state = *next;
     if (frame >= 180) {
