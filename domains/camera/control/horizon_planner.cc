@@ -292,6 +292,12 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   std::array<double, kCandidates> cheap{};
   std::array<int, kCandidates> order{};
   std::array<double, kCandidates> durations{};
+  // Candidate i's trajectory, once its duration is set: from the camera's state to its goal
+  // there, arriving at the goal's velocity.
+  auto trajectory = [&](int i) {
+    const double at = durations[static_cast<std::size_t>(i)];
+    return Quintic(now, goal_of(i, at), velocity_of(i, at), at);
+  };
   for (int i = 0; i < kCandidates; ++i) {
     order[static_cast<std::size_t>(i)] = i;
     const auto u = static_cast<std::size_t>(i);
@@ -307,7 +313,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
     const double d = (goal - now.position).norm();
     durations[u] = std::max({plan_seconds_, 1.875 * d / (0.9 * max_speed_),
                              std::sqrt(5.77 * d / (0.9 * max_acceleration_))});
-    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
+    const Quintic q = trajectory(i);
     const double jerk = (q.acceleration(dt) - now.acceleration).norm() / dt;
     // Framing is priced where the goal is now, against this frame's character; the trail's
     // where it leads, the ideal shot behind her (its waypoint is a way, not a shot).
@@ -335,7 +341,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
   for (int i : order) {
     const auto u = static_cast<std::size_t>(i);
     if (!(cheap[u] < best_cost)) break;  // sorted: nothing after can win either
-    const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
+    const Quintic q = trajectory(i);
     // The first frame must be a smooth, usable move.
     Eigen::Vector3d first = q.position(dt);
     Eigen::Vector3d first_velocity = q.velocity(dt);
@@ -460,7 +466,7 @@ std::optional<HorizonPlanner::State> HorizonPlanner::plan(const State& now,
       if (!std::isfinite(cheap[u])) continue;
       const MotionPrediction::Sample& first = prediction.sample(0);
       const SceneAtTime& g = prediction.geometry(0);
-      const Quintic q(now, goal_of(i, durations[u]), velocity_of(i, durations[u]), durations[u]);
+      const Quintic q = trajectory(i);
       const Eigen::Vector3d x = q.position(std::max(first.ahead, dt));
       regains_sight_ = has_room(g, x, radius) && g.line_of_sight(x, first.look_at);
     }
