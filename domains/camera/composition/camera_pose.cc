@@ -38,12 +38,4 @@ std::optional<View> View::of(const CameraPose& pose) {
   return v;
 }
 
-std::optional<Eigen::Vector2d> View::project(const Eigen::Vector3d& q) const {
-  const Eigen::Vector3d d = q - p_;
-  const double z = d.dot(f_);
-  if (!(z > kNearDepth)) return std::nullopt;
-  return Eigen::Vector2d((1 + d.dot(r_) / (z * tan_half_ * aspect_)) / 2,
-                         (1 + d.dot(u_) / (z * tan_half_)) / 2);
-}
-
 }  // namespace sightline::camera

@@ -39,7 +39,14 @@ class View {
   const Eigen::Vector3d& up() const { return u_; }
   double depth(const Eigen::Vector3d& q) const { return (q - p_).dot(f_); }
   // The screen point of q, or nullopt when q is not in front (depth <= kNearDepth).
-  std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& q) const;
+  // Inline: a shot's score projects every person's 27 samples once per property.
+  std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& q) const {
+    const Eigen::Vector3d d = q - p_;
+    const double z = d.dot(f_);
+    if (!(z > kNearDepth)) return std::nullopt;
+    return Eigen::Vector2d((1 + d.dot(r_) / (z * tan_half_ * aspect_)) / 2,
+                           (1 + d.dot(u_) / (z * tan_half_)) / 2);
+  }
 
  private:
   Eigen::Vector3d p_, f_, r_, u_;

@@ -29,11 +29,8 @@ int visible_at_once(const ShotPropertyKind& kind, const ShotProperty& property) 
 double property_score(const ShotPropertyKind& kind, const ShotProperty& property, int at_once,
                       const View& view, const ShotWorld& world, const int* targets) {
   if (at_once > 0) {
-    const int target = targets[0];
-    int clear = 0;
-    for (const Eigen::Vector3d& q : person_samples(world.people()[static_cast<std::size_t>(target)].body)) {
-      if (world.clear(view.position(), q, target) && ++clear == at_once) return 1.0;
-    }
+    const int clear = world.count_clear(view.position(), targets[0], at_once);
+    if (clear == at_once) return 1.0;
     return satisfaction(static_cast<double>(clear) / kPersonSamples, property.range, property.softness,
                         kind.circular);
   }

@@ -145,11 +145,7 @@ ShotPropertyKind visible_kind() {
   k.default_range = ValueRange{1, 1};
   k.read = read_nothing;
   k.measure = [](const ShotProperty&, const MeasureContext& c) {
-    int clear = 0;
-    for (const Eigen::Vector3d& q : person_samples(target(c, 0).body)) {
-      if (c.world.clear(c.view.position(), q, c.targets[0])) ++clear;
-    }
-    return static_cast<double>(clear) / kPersonSamples;
+    return static_cast<double>(c.world.count_clear(c.view.position(), c.targets[0])) / kPersonSamples;
   };
   return k;
 }

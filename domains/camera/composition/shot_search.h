@@ -8,8 +8,9 @@
 //      when they ask none), around the group's centre likewise, plus a Halton sample of the
 //      region and the start; each clamped into the region; with two subjects at screen
 //      points, the best exact two-subject pose too (toric_framing.h, on a coarse grid);
-//      The group's vantages come first, each ring of bearings whole before the next
-//      distance or elevation; with a time limit the candidates stop at 40% of it;
+//      the vantages' distances first (the group's ring, then each person's), then 15%
+//      nearer, then 20% farther, each ring of bearings whole before the next elevation;
+//      with a time limit the candidates stop at 40% of it;
 //   2. at each, the view aims at the targets (their aim points' centre, then a few Newton
 //      steps putting `screen_position` targets at their points), the lens at its mid value;
 //      when someone the shot keeps out is on screen there, the view also turned just enough

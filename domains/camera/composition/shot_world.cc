@@ -1,33 +1,13 @@
 #include "sightline/domains/camera/composition/shot_world.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
 
 #include "sightline/domains/camera/geometry/triangle_index.h"
 #include "sightline/world.h"
 
 namespace sightline::camera {
-
-bool segment_enters_interior(const Aabb& box, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  // The points a + t (b - a), t in [0, 1], strictly inside every slab: the open intervals
-  // (enter_i, leave_i) of t meet in (enter, leave), which meets [0, 1] iff enter < leave,
-  // leave > 0 and enter < 1.
-  double enter = -std::numeric_limits<double>::infinity();
-  double leave = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    const double d = b[i] - a[i];
-    if (d == 0) {
-      if (!(box.min[i] < a[i] && a[i] < box.max[i])) return false;
-      continue;
-    }
-    double t0 = (box.min[i] - a[i]) / d, t1 = (box.max[i] - a[i]) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    enter = std::max(enter, t0);
-    leave = std::min(leave, t1);
-  }
-  return enter < leave && leave > 0 && enter < 1;
-}
 
 std::array<Eigen::Vector3d, kPersonSamples> person_samples(const Aabb& body) {
   static constexpr double kAt[3] = {0.1, 0.5, 0.9};
@@ -113,6 +93,51 @@ bool ShotWorld::clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q, int ow
   });
   if (blocked) return false;
   return !scene_->triangle_index().segment_blocked(p, q);
+}
+
+int ShotWorld::count_clear(const Eigen::Vector3d& p, int own, int enough) const {
+  const Aabb& body = people_[static_cast<std::size_t>(own)].body;
+  const std::array<Eigen::Vector3d, kPersonSamples> samples = person_samples(body);
+  // Every sight line lies in the box round p and the body: only boxes touching it can block.
+  const Aabb hull{p.cwiseMin(body.min), p.cwiseMax(body.max)};
+  auto touches = [&](const Aabb& b) {
+    return (b.min.array() <= hull.max.array()).all() && (hull.min.array() <= b.max.array()).all();
+  };
+  constexpr std::size_t kMost = 64;  // more than this many near boxes: sample by sample
+  std::array<const Aabb*, kMost> near{};
+  std::size_t count = 0;
+  bool overflow = false;
+  auto gather = [&](const Aabb& b) {
+    if (!touches(b)) return;
+    if (count == kMost) {
+      overflow = true;
+      return;
+    }
+    near[count++] = &b;
+  };
+  const int own_mover = people_[static_cast<std::size_t>(own)].mover;
+  for (std::size_t m = 0; m < movers_.size(); ++m) {
+    if (static_cast<int>(m) != own_mover) gather(movers_[m]);
+  }
+  if (scene_->has_character() && own != 0) gather(people_[0].body);
+  const sightline::World* world = scene_->world();
+  if (!world) {
+    scene_->solid_tree().for_each_touching(hull, [&](auto index) { gather(scene_->solid_tree().box(index)); });
+  }
+  int clear_count = 0;
+  for (const Eigen::Vector3d& q : samples) {
+    bool seen;
+    if (overflow) {
+      seen = clear(p, q, own);
+    } else {
+      seen = true;
+      for (std::size_t i = 0; i < count && seen; ++i) seen = !segment_enters_interior(*near[i], p, q);
+      if (seen && world) seen = !world->first_hit({p.x(), p.y(), p.z()}, {q.x(), q.y(), q.z()}, t_).has_value();
+      if (seen && !world) seen = !scene_->triangle_index().segment_blocked(p, q);
+    }
+    if (seen && ++clear_count == enough) break;
+  }
+  return clear_count;
 }
 
 double ShotWorld::clearance(const Eigen::Vector3d& p, double limit) const {

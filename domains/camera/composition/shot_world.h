@@ -9,7 +9,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,7 +32,26 @@ struct PersonAtTime {
 inline constexpr int kPersonSamples = 27;
 
 // True when the closed segment a-b meets the open interior of `box`.
-bool segment_enters_interior(const Aabb& box, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+// Inline: a shot's `visible` properties test every sample's sight line against each box near.
+inline bool segment_enters_interior(const Aabb& box, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  // The points a + t (b - a), t in [0, 1], strictly inside every slab: the open intervals
+  // (enter_i, leave_i) of t meet in (enter, leave), which meets [0, 1] iff enter < leave,
+  // leave > 0 and enter < 1.
+  double enter = -std::numeric_limits<double>::infinity();
+  double leave = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double d = b[i] - a[i];
+    if (d == 0) {
+      if (!(box.min[i] < a[i] && a[i] < box.max[i])) return false;
+      continue;
+    }
+    double t0 = (box.min[i] - a[i]) / d, t1 = (box.max[i] - a[i]) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter < leave && leave > 0 && enter < 1;
+}
 
 // The 27 points min + (i, j, k) (max - min), i, j, k in {0.1, 0.5, 0.9} (FORMATS.md).
 std::array<Eigen::Vector3d, kPersonSamples> person_samples(const Aabb& body);
@@ -52,6 +73,11 @@ class ShotWorld {
   // The segment p-q passes through no solid geometry; person `own`'s box (an index into
   // people(), or -1) does not count.
   bool clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q, int own) const;
+  // How many of person `own`'s samples (person_samples of their body) are clear() from p,
+  // counting at most `enough` when it is > 0 (then stopping there). The same answer as
+  // clear() sample by sample, faster: the boxes that can block any of the sight lines (those
+  // touching the box round p and the body) are gathered once for all of them.
+  int count_clear(const Eigen::Vector3d& p, int own, int enough = 0) const;
   // Distance from p to the nearest solid geometry or person's box (< 0 inside a box),
   // `limit` when nothing is nearer.
   double clearance(const Eigen::Vector3d& p, double limit) const;

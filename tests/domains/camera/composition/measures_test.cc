@@ -6,12 +6,14 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 
 #include "sightline/csp/files/yaml_spec.h"
 #include "sightline/domains/camera/composition/composition_problem.h"
 #include "sightline/domains/camera/composition/property_kinds.h"
 #include "sightline/domains/camera/composition/shot.h"
+#include "sightline/domains/camera/composition/shot_world.h"
 #include "sightline/domains/camera/scene_file.h"
 
 namespace sightline::camera {
@@ -234,6 +236,51 @@ TEST(ShotMeasures, FramedCountsTheSamplesInsideTheRectangle) {
   // x = -1 project to sx = 0.5 (on the rectangle's edge: inside), those at x = -1.24 to the
   // right half, those at x = -0.76 to the left half: 18 of 27 inside.
   EXPECT_NEAR(measure(s, pose({-1, 0.9, -10}, {-1, 0.9, 0})).measure, 18.0 / 27, 1e-12);
+}
+
+TEST(ShotMeasures, CountClearAgreesWithEachSightLine) {
+  // count_clear gathers the boxes near a person once for all their samples; it must answer
+  // as clear() does sample by sample: the followed character, two actors and random boxes,
+  // few (every box gathered) and many (more than it gathers: sample by sample), from random
+  // camera positions, and with `enough` stopping the count.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-6, 6), h(0, 3);
+  for (auto [boxes, largest] : {std::pair{12, 1.5}, std::pair{400, 0.3}}) {
+    std::uniform_real_distribution<double> size(0.05, largest);
+    std::string text =
+        "name: sight\ncharacter: {size: [0.6, 1.8, 0.6], look_at_height: 1.5}\n"
+        "trajectory: [{t: 0, position: [0, 0, 0], yaw: 0}]\nboxes:\n";
+    for (int i = 0; i < boxes; ++i) {
+      const double x = u(rng), y = h(rng), z = u(rng);
+      if (std::abs(x) < 2 && std::abs(z) < 2) continue;  // keep the people out of the boxes
+      text += "  - {min: [" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+              "], max: [" + std::to_string(x + size(rng)) + ", " + std::to_string(y + size(rng)) + ", " +
+              std::to_string(z + size(rng)) + "]}\n";
+    }
+    text +=
+        "actors:\n"
+        "  - {name: alice, trajectory: [{t: 0, position: [-1, 0, 1], yaw: 0}]}\n"
+        "  - {name: bob, trajectory: [{t: 0, position: [1, 0, -1], yaw: 0}]}\n";
+    const Scene scene = parse_scene(csp::parse_yaml(text, "sight.yaml"));
+    const ShotWorld world(scene, 0);
+    ASSERT_EQ(world.people().size(), 3u);
+    int partly = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+      const Eigen::Vector3d p(2 * u(rng), 1 + 2 * h(rng), 2 * u(rng));
+      for (int who = 0; who < 3; ++who) {
+        int expected = 0;
+        for (const Eigen::Vector3d& q : person_samples(world.people()[static_cast<std::size_t>(who)].body)) {
+          if (world.clear(p, q, who)) ++expected;
+        }
+        ASSERT_EQ(world.count_clear(p, who), expected) << boxes << " boxes, trial " << trial << ", person " << who;
+        for (int enough : {1, 9, 27}) {
+          ASSERT_EQ(world.count_clear(p, who, enough), std::min(enough, expected));
+        }
+        if (expected > 0 && expected < kPersonSamples) ++partly;
+      }
+    }
+    EXPECT_GT(partly, 50) << boxes << " boxes: too few positions see part of someone";
+  }
 }
 
 }  // namespace
