@@ -73,67 +73,60 @@ std::optional<int> ShotWorld::find(const std::string& name) const {
   return std::nullopt;
 }
 
-bool ShotWorld::clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q, int own) const {
+template <class Visit>
+void ShotWorld::for_each_box_near(const Aabb& span, int own, Visit&& visit) const {
+  auto touches = [&](const Aabb& b) {
+    return (b.min.array() <= span.max.array()).all() && (span.min.array() <= b.max.array()).all();
+  };
   const int own_mover = own >= 0 ? people_[static_cast<std::size_t>(own)].mover : -1;
   for (std::size_t m = 0; m < movers_.size(); ++m) {
-    if (static_cast<int>(m) == own_mover) continue;
-    if (segment_enters_interior(movers_[m], p, q)) return false;
+    if (static_cast<int>(m) != own_mover && touches(movers_[m])) visit(movers_[m]);
   }
   // The followed character is not a mover: its box blocks the others' samples.
-  if (scene_->has_character() && own != 0 && segment_enters_interior(people_[0].body, p, q)) {
-    return false;
+  if (scene_->has_character() && own != 0 && touches(people_[0].body)) visit(people_[0].body);
+  if (!scene_->world()) {
+    scene_->solid_tree().for_each_touching(span, [&](auto index) { visit(scene_->solid_tree().box(index)); });
   }
+}
+
+bool ShotWorld::surfaces_clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const {
   if (const sightline::World* world = scene_->world()) {
     return !world->first_hit({p.x(), p.y(), p.z()}, {q.x(), q.y(), q.z()}, t_).has_value();
   }
-  bool blocked = false;
-  Aabb span{p.cwiseMin(q), p.cwiseMax(q)};
-  scene_->solid_tree().for_each_touching(span, [&](auto index) {
-    if (!blocked && segment_enters_interior(scene_->solid_tree().box(index), p, q)) blocked = true;
-  });
-  if (blocked) return false;
   return !scene_->triangle_index().segment_blocked(p, q);
+}
+
+bool ShotWorld::clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q, int own) const {
+  bool blocked = false;
+  for_each_box_near(Aabb{p.cwiseMin(q), p.cwiseMax(q)}, own,
+                    [&](const Aabb& box) { blocked = blocked || segment_enters_interior(box, p, q); });
+  return !blocked && surfaces_clear(p, q);
 }
 
 int ShotWorld::count_clear(const Eigen::Vector3d& p, int own, int enough) const {
   const Aabb& body = people_[static_cast<std::size_t>(own)].body;
-  const std::array<Eigen::Vector3d, kPersonSamples> samples = person_samples(body);
-  // Every sight line lies in the box round p and the body: only boxes touching it can block.
-  const Aabb hull{p.cwiseMin(body.min), p.cwiseMax(body.max)};
-  auto touches = [&](const Aabb& b) {
-    return (b.min.array() <= hull.max.array()).all() && (hull.min.array() <= b.max.array()).all();
-  };
-  constexpr std::size_t kMost = 64;  // more than this many near boxes: sample by sample
+  // Every sight line lies in the box round p and the body: only boxes touching it can block,
+  // gathered once (more than kMost of them: sample by sample).
+  constexpr std::size_t kMost = 64;
   std::array<const Aabb*, kMost> near{};
   std::size_t count = 0;
   bool overflow = false;
-  auto gather = [&](const Aabb& b) {
-    if (!touches(b)) return;
+  for_each_box_near(Aabb{p.cwiseMin(body.min), p.cwiseMax(body.max)}, own, [&](const Aabb& box) {
     if (count == kMost) {
       overflow = true;
-      return;
+    } else {
+      near[count++] = &box;
     }
-    near[count++] = &b;
-  };
-  const int own_mover = people_[static_cast<std::size_t>(own)].mover;
-  for (std::size_t m = 0; m < movers_.size(); ++m) {
-    if (static_cast<int>(m) != own_mover) gather(movers_[m]);
-  }
-  if (scene_->has_character() && own != 0) gather(people_[0].body);
-  const sightline::World* world = scene_->world();
-  if (!world) {
-    scene_->solid_tree().for_each_touching(hull, [&](auto index) { gather(scene_->solid_tree().box(index)); });
-  }
+  });
   int clear_count = 0;
-  for (const Eigen::Vector3d& q : samples) {
+  for (const Eigen::Vector3d& q : person_samples(body)) {
     bool seen;
     if (overflow) {
       seen = clear(p, q, own);
     } else {
       seen = true;
       for (std::size_t i = 0; i < count && seen; ++i) seen = !segment_enters_interior(*near[i], p, q);
-      if (seen && world) seen = !world->first_hit({p.x(), p.y(), p.z()}, {q.x(), q.y(), q.z()}, t_).has_value();
-      if (seen && !world) seen = !scene_->triangle_index().segment_blocked(p, q);
+      seen = seen && surfaces_clear(p, q);
     }
     if (seen && ++clear_count == enough) break;
   }

@@ -83,6 +83,15 @@ class ShotWorld {
   double clearance(const Eigen::Vector3d& p, double limit) const;
 
  private:
+  // Calls visit(const Aabb&) for each box that may hide person `own`'s samples (or
+  // anything, own -1) along a segment lying in `span`: the movers touching it but own's,
+  // the followed character's box unless own is the character, and, when the scene has no
+  // world of its own (which answers for its solids), the scene's solid boxes touching it.
+  template <class Visit>
+  void for_each_box_near(const Aabb& span, int own, Visit&& visit) const;
+  // The segment p-q meets no surface of the scene's world, or of its level (triangles).
+  bool surfaces_clear(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const;
+
   const Scene* scene_;
   double t_ = 0;
   std::vector<PersonAtTime> people_;
