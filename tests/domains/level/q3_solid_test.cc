@@ -54,6 +54,39 @@ class BruteForceSolid {
     }
     return inside;
   }
+  // The game's own point contents (CM_PointContents) over the raw lumps: the leaf's cluster,
+  // the leaf's listed brushes, then each brush model's brushes within its bounds.
+  bool point_contents_solid(const Eigen::Vector3d& p) const {
+    std::int32_t node = 0;
+    while (node >= 0) {
+      const std::size_t at = lump_offset(b_, kNodesLump) + 36 * static_cast<std::size_t>(node);
+      const std::size_t plane =
+          lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
+      const double d = vec_at(b_, plane).dot(p) - le_f32(b_, plane + 12);
+      node = le_i32(b_, at + (d >= 0 ? 4 : 8));
+    }
+    const std::size_t leaf =
+        lump_offset(b_, kLeavesLump) + 48 * static_cast<std::size_t>(-(node + 1));
+    if (le_i32(b_, leaf) < 0) return true;
+    const auto first = static_cast<std::size_t>(le_i32(b_, leaf + 40));
+    const auto n = static_cast<std::size_t>(le_i32(b_, leaf + 44));
+    for (std::size_t k = first; k < first + n; ++k) {
+      const auto brush =
+          static_cast<std::size_t>(le_i32(b_, lump_offset(b_, kLeafBrushesLump) + 4 * k));
+      if (solid_brush(brush) && in_brush(brush, p)) return true;
+    }
+    for (std::size_t model = 1; model < lump_length(b_, 7) / 40; ++model) {
+      const std::size_t at = lump_offset(b_, 7) + 40 * model;
+      const Eigen::Vector3d lo = vec_at(b_, at), hi = vec_at(b_, at + 12);
+      if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
+      const auto mb = static_cast<std::size_t>(le_i32(b_, at + 32));
+      for (std::size_t brush = mb; brush < mb + static_cast<std::size_t>(le_i32(b_, at + 36));
+           ++brush) {
+        if (solid_brush(brush) && in_brush(brush, p)) return true;
+      }
+    }
+    return false;
+  }
   // Every brush of the map: the world's and the brush entities' (doors, platforms).
   bool in_a_solid_brush(const Eigen::Vector3d& p) const {
     for (std::size_t i = 0; i < brush_count(); ++i) {
@@ -162,6 +195,52 @@ TEST_P(Q3Solid, AgreesWithABruteForceOverEveryBrushOfTheMap) {
   EXPECT_GT(open, 100);
   EXPECT_GT(opaque_leaf, 100);
   EXPECT_GT(in_leaf_brush, 0);
+}
+
+// Points on the brushes' own faces and a hair either side of them (their axial box's
+// corners, face centres and centre, each nudged by +-1e-9 and +-1e-3 file units along each
+// axis), where an answer turns on <= against <: the same answers as the game's walk over
+// the raw lumps, point for point.
+TEST_P(Q3Solid, AnswersAsTheGameOnAndBesideEveryBrushFace) {
+  LOAD_OR_SKIP(GetParam(), m);
+  const BruteForceSolid brute(m.bytes);
+  int checked = 0, solid = 0;
+  for (std::size_t b = 0; b < brute.brush_count(); b += 1 + brute.brush_count() / 1500) {
+    if (!brute.solid_brush(b)) continue;
+    const auto [lo, hi] = brute.axial_box(b);
+    if ((lo.array() < -1e6).any() || (hi.array() > 1e6).any()) continue;  // no full axial box
+    std::vector<Eigen::Vector3d> points{(lo + hi) / 2};
+    for (int corner = 0; corner < 8; ++corner) {
+      points.emplace_back(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(),
+                          corner & 4 ? hi.z() : lo.z());
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const Eigen::Vector3d& end : {lo, hi}) {
+        Eigen::Vector3d face = (lo + hi) / 2;
+        face[axis] = end[axis];
+        points.push_back(face);
+      }
+    }
+    const std::size_t base = points.size();
+    for (std::size_t i = 0; i < base; ++i) {
+      for (int axis = 0; axis < 3; ++axis) {
+        for (double nudge : {-1e-3, -1e-9, 1e-9, 1e-3}) {
+          Eigen::Vector3d q = points[i];
+          q[axis] += nudge;
+          points.push_back(q);
+        }
+      }
+    }
+    for (const Eigen::Vector3d& q : points) {
+      const bool expected = brute.point_contents_solid(q);
+      ASSERT_EQ(m.solid->solid_at_file(q), expected) << "brush " << b << " at " << q.transpose();
+      solid += expected ? 1 : 0;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 10000);
+  EXPECT_GT(solid, checked / 10);            // on and inside the faces: solid
+  EXPECT_LT(solid, checked - checked / 10);  // a hair outside: often open
 }
 
 // Doors and platforms are brush models: no leaf lists their brushes, yet their faces are in
