@@ -4,6 +4,7 @@ a camera trace in numpy equal to the CSV the program writes, column for column; 
 from Python that resumes; Ctrl-C stopping a solve or a suite; bad input raising with file and
 line, in Python's words; docs/PYTHON.md's examples running."""
 import csv
+import glob
 import os
 import re
 import shutil
@@ -249,6 +250,18 @@ def interrupt_after(seconds):
     return timer
 
 
+def interrupt_once(ready, give_up_seconds=60):
+    """Ctrl-C to this process from a thread, as soon as ready() holds (polled every 10 ms)."""
+    def wait_then_interrupt():
+        deadline = time.monotonic() + give_up_seconds
+        while not ready() and time.monotonic() < deadline:
+            time.sleep(0.01)
+        os.kill(os.getpid(), signal.SIGINT)
+    thread = threading.Thread(target=wait_then_interrupt)
+    thread.start()
+    return thread
+
+
 def test_ctrl_c_interrupts_a_solve_without_a_time_limit(source_dir):
     # bnb cannot prove myciel5's 5-colouring optimum (1 conflict) in any reasonable time.
     problem = sl.load_problem(os.path.join(source_dir, "examples/graphs/myciel5.col"), colours=5)
@@ -270,7 +283,9 @@ def test_ctrl_c_stops_a_suite_keeping_what_is_done_and_says_how_to_resume(tmp_pa
     suite.write_text(f"name: long\nproblems:\n  instances:\n    - {{graph: {graph}, colours: 5}}\n"
                      "  solvers: [sls, tabu]\n  seeds: [1, 2, 3, 4]\n  limits: {time_seconds: 0.4}\n")
     out = str(tmp_path / "out")
-    timer = interrupt_after(0.6)
+    # Once the first run is saved (not after a fixed time: on a loaded machine the first run
+    # may not be done by then), while 7 runs of 0.4 s are still to come.
+    timer = interrupt_once(lambda: bool(glob.glob(os.path.join(out, "runs", "*.result"))))
     with pytest.raises(KeyboardInterrupt) as caught:
         sl.run_suite(str(suite), out)
     timer.join()

@@ -1,6 +1,7 @@
 #include "sightline/domains/camera/control/octree_search.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -45,12 +46,18 @@ Eigen::Vector3d OctreeSearch::clamp(const Eigen::Vector3d& p) const {
 }
 
 Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible, double bound) {
+  double cheap_cost = 0;
+  if (!cheap_terms(p, require_visible, cheap_cost)) return Candidate{p, cheap_cost, false};
+  return expensive_terms(p, require_visible, cheap_cost, bound);
+}
+
+bool OctreeSearch::cheap_terms(const Eigen::Vector3d& p, bool require_visible, double& cost) {
   ++evaluations_;
   values_[0] = p.x();
   values_[1] = p.y();
   values_[2] = p.z();
   const std::span<const double> x(values_, 3);
-  Candidate out{p, 0, false};
+  cost = 0;
   for (csp::ConstraintId id : view_->cheap()) {
     const csp::Constraint& c = problem_->constraint(id);
     double violation;
@@ -68,11 +75,21 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
       violation = c.violation(x);
     }
     if (c.is_hard()) {
-      if (require_visible && violation > 0) return out;
+      if (require_visible && violation > 0) return false;
       continue;  // Bourne's search ignores hard constraints
     }
-    out.cost += c.weight() * violation;
+    cost += c.weight() * violation;
   }
+  return true;
+}
+
+Candidate OctreeSearch::expensive_terms(const Eigen::Vector3d& p, bool require_visible,
+                                        double cheap_cost, double bound) {
+  const std::span<const double> x(values_, 3);
+  values_[0] = p.x();
+  values_[1] = p.y();
+  values_[2] = p.z();
+  Candidate out{p, cheap_cost, false};
   if (out.cost >= bound) return out;
   if (!require_visible) {
     // Bourne's search scores only the profile's terms: no sight lines, no clearance.
@@ -82,10 +99,10 @@ Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible,
   // The sight-line tests. Ali: a candidate counts only if the look-at point is visible from
   // it (whether the profile makes that constraint hard or soft), and only if it breaks no
   // hard constraint. Asked in order_ (see the header); the soft counts stop as soon as the
-  // candidate has lost (csp::Constraint::violation_until): the same candidates survive, with the same sums.
+  // candidate has lost (csp::Constraint::violation_until): the same candidates survive, with
+  // the same sums.
   const std::vector<csp::ConstraintId>& expensive = view_->expensive();
   if (expensive_count_ > 0) {
-    const double cheap_cost = out.cost;
     for (int i = 0; i < expensive_count_; ++i) known_[i] = false;
     for (int k = 0; k < expensive_count_; ++k) {
       const int i = order_[k];
@@ -141,13 +158,36 @@ Candidate OctreeSearch::run(const Eigen::Vector3d& start, const OctreeSettings& 
   Candidate best;
   best.cost = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < settings.passes; ++pass) {
-    // The octants' centres are the cube's centre +- half/2 on each axis.
+    // The octants' centres are the cube's centre +- half/2 on each axis, their cheap terms
+    // first; then the sight lines, cheapest-looking octant first (see the header). The
+    // pass keeps the octant the plain loop over children 0..7 keeps: the cheapest, the
+    // lowest child among equals, and not one only as cheap as an earlier pass's best.
     const double q = 0.5 * half;
+    std::array<Eigen::Vector3d, 8> at;
+    std::array<double, 8> cheap{};
+    std::array<int, 8> order{};
+    int count = 0;
     for (int child = 0; child < 8; ++child) {
       const Eigen::Vector3d offset((child & 1) ? q : -q, (child & 2) ? q : -q,
                                    (child & 4) ? q : -q);
-      const Candidate c = evaluate(clamp(centre + offset), settings.require_visible, best.cost);
-      if (c.valid && c.cost < best.cost) best = c;
+      at[child] = clamp(centre + offset);
+      if (!cheap_terms(at[child], settings.require_visible, cheap[child])) continue;
+      int k = count++;  // insertion by (cheap cost, child): stable, so equals keep their order
+      for (; k > 0 && cheap[order[k - 1]] > cheap[child]; --k) order[k] = order[k - 1];
+      order[k] = child;
+    }
+    int pass_best = -1;  // the child this pass has kept so far
+    for (int k = 0; k < count; ++k) {
+      const int child = order[k];
+      // A lower child than the one kept wins a tie, as it would have come first.
+      const bool tie_wins = pass_best >= 0 && child < pass_best;
+      const double bound =
+          tie_wins ? std::nextafter(best.cost, std::numeric_limits<double>::infinity()) : best.cost;
+      const Candidate c = expensive_terms(at[child], settings.require_visible, cheap[child], bound);
+      if (c.valid && c.cost < bound) {
+        best = c;
+        pass_best = child;
+      }
     }
     // Table 9: "if current calculated best solution is occluded then try next desired
     // orientation value": without a valid candidate the caller moves on.
