@@ -70,11 +70,23 @@ struct OrientationTerm {
   double desired_degrees;
   template <class T>
   T operator()(const T* cam_xz) const {
+    return at(facing(), cam_xz);
+  }
+  // The character's facing, (sin, cos) of her yaw: the same for every camera position, so a
+  // search pricing many positions in one frame takes it once and calls at().
+  struct Facing {
+    double x, z;
+  };
+  Facing facing() const {
+    const double yaw = char_yaw_degrees / kDegreesPerRadian;
+    return {std::sin(yaw), std::cos(yaw)};
+  }
+  template <class T>
+  T at(const Facing& facing, const T* cam_xz) const {
     using std::abs;
     using std::atan2;
-    const double yaw = char_yaw_degrees / kDegreesPerRadian;
-    const double fx = std::sin(yaw);
-    const double fz = std::cos(yaw);
+    const double fx = facing.x;
+    const double fz = facing.z;
     const T dx = char_x - cam_xz[0];
     const T dz = char_z - cam_xz[1];
     if (value_of(dx) == 0 && value_of(dz) == 0) return T(desired_degrees - 90.0);

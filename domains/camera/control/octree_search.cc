@@ -45,7 +45,14 @@ Eigen::Vector3d OctreeSearch::clamp(const Eigen::Vector3d& p) const {
   return q;
 }
 
+void OctreeSearch::prepare() {
+  orientation_ = view_->orientation().term();
+  if (orientation_override_) orientation_.desired_degrees = *orientation_override_;
+  facing_ = orientation_.facing();
+}
+
 Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible, double bound) {
+  prepare();
   double cheap_cost = 0;
   if (!cheap_terms(p, require_visible, cheap_cost)) return Candidate{p, cheap_cost, false};
   return expensive_terms(p, require_visible, cheap_cost, bound);
@@ -61,11 +68,11 @@ bool OctreeSearch::cheap_terms(const Eigen::Vector3d& p, bool require_visible, d
   for (csp::ConstraintId id : view_->cheap()) {
     const csp::Constraint& c = problem_->constraint(id);
     double violation;
-    if (id == view_->orientation_id() && orientation_override_) {
-      auto term = view_->orientation().term();
-      term.desired_degrees = *orientation_override_;
+    if (id == view_->orientation_id()) {
+      // The constraint's own term (AbsTermConstraint: |term(cam_x, cam_z)|), its facing
+      // taken once a search (prepare()), under the override when there is one.
       const double xz[2] = {p.x(), p.z()};
-      violation = std::abs(term(xz));
+      violation = std::abs(orientation_.at(facing_, xz));
     } else if (id == view_->height_id() && height_override_) {
       auto term = view_->height().term();
       term.desired = *height_override_;
@@ -153,6 +160,7 @@ double OctreeSearch::first_half_size(double requested) const {
 }
 
 Candidate OctreeSearch::run(const Eigen::Vector3d& start, const OctreeSettings& settings) {
+  prepare();
   double half = first_half_size(settings.initial_half_size);
   Eigen::Vector3d centre = clamp(start);
   Candidate best;

@@ -91,6 +91,9 @@ class OctreeSearch {
   // with require_visible), summed into `cost`; then, from that sum, the sight lines and
   // clearance, stopping once the cost reaches `bound`.
   bool cheap_terms(const Eigen::Vector3d& p, bool require_visible, double& cost);
+  // The orientation term of this search (the problem's, under the override), with the
+  // character's facing computed once: the frame's parameters do not change within a search.
+  void prepare();
   Candidate expensive_terms(const Eigen::Vector3d& p, bool require_visible, double cheap_cost,
                             double bound);
 
@@ -105,6 +108,8 @@ class OctreeSearch {
   double term_[kMaxExpensive] = {};
   bool known_[kMaxExpensive] = {};
   std::optional<double> orientation_override_, height_override_;
+  terms::OrientationTerm orientation_{};
+  terms::OrientationTerm::Facing facing_{};
   double values_[3] = {0, 0, 0};
   std::uint64_t evaluations_ = 0;
 };
