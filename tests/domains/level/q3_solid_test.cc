@@ -24,7 +24,8 @@ class BruteForceSolid {
  public:
   explicit BruteForceSolid(const std::vector<unsigned char>& b) : b_(b) {}
 
-  int leaf_cluster(const Eigen::Vector3d& p) const {
+  // The byte offset of the leaf the point falls into, down the tree's planes.
+  std::size_t leaf_at(const Eigen::Vector3d& p) const {
     std::int32_t node = 0;
     while (node >= 0) {
       const std::size_t at = lump_offset(b_, kNodesLump) + 36 * static_cast<std::size_t>(node);
@@ -33,8 +34,9 @@ class BruteForceSolid {
       const double d = vec_at(b_, plane).dot(p) - le_f32(b_, plane + 12);
       node = le_i32(b_, at + (d >= 0 ? 4 : 8));
     }
-    return le_i32(b_, lump_offset(b_, kLeavesLump) + 48 * static_cast<std::size_t>(-(node + 1)));
+    return lump_offset(b_, kLeavesLump) + 48 * static_cast<std::size_t>(-(node + 1));
   }
+  int leaf_cluster(const Eigen::Vector3d& p) const { return le_i32(b_, leaf_at(p)); }
   std::size_t brush_count() const { return lump_length(b_, kBrushesLump) / 12; }
   bool solid_brush(std::size_t i) const {
     const auto shader =
@@ -57,16 +59,7 @@ class BruteForceSolid {
   // The game's own point contents (CM_PointContents) over the raw lumps: the leaf's cluster,
   // the leaf's listed brushes, then each brush model's brushes within its bounds.
   bool point_contents_solid(const Eigen::Vector3d& p) const {
-    std::int32_t node = 0;
-    while (node >= 0) {
-      const std::size_t at = lump_offset(b_, kNodesLump) + 36 * static_cast<std::size_t>(node);
-      const std::size_t plane =
-          lump_offset(b_, kPlanesLump) + 16 * static_cast<std::size_t>(le_i32(b_, at));
-      const double d = vec_at(b_, plane).dot(p) - le_f32(b_, plane + 12);
-      node = le_i32(b_, at + (d >= 0 ? 4 : 8));
-    }
-    const std::size_t leaf =
-        lump_offset(b_, kLeavesLump) + 48 * static_cast<std::size_t>(-(node + 1));
+    const std::size_t leaf = leaf_at(p);
     if (le_i32(b_, leaf) < 0) return true;
     const auto first = static_cast<std::size_t>(le_i32(b_, leaf + 40));
     const auto n = static_cast<std::size_t>(le_i32(b_, leaf + 44));
