@@ -91,11 +91,11 @@ class OctreeSearch {
   // with require_visible), summed into `cost`; then, from that sum, the sight lines and
   // clearance, stopping once the cost reaches `bound`.
   bool cheap_terms(const Eigen::Vector3d& p, bool require_visible, double& cost);
+  Candidate expensive_terms(const Eigen::Vector3d& p, bool require_visible, double cheap_cost,
+                            double bound);
   // The orientation term of this search (the problem's, under the override), with the
   // character's facing computed once: the frame's parameters do not change within a search.
   void prepare();
-  Candidate expensive_terms(const Eigen::Vector3d& p, bool require_visible, double cheap_cost,
-                            double bound);
 
   static constexpr int kMaxExpensive = 8;
   const csp::Problem* problem_;
