@@ -8,7 +8,10 @@
 namespace sightline::camera {
 
 OctreeSearch::OctreeSearch(const csp::Problem& problem, const CameraProblemView& view)
-    : problem_(&problem), view_(&view) {
+    : problem_(&problem),
+      view_(&view),
+      orientation_(view.orientation().term()),
+      facing_(orientation_.facing()) {
   const std::vector<csp::ConstraintId>& expensive = view.expensive();
   if (expensive.size() > static_cast<std::size_t>(kMaxExpensive)) return;
   expensive_count_ = static_cast<int>(expensive.size());
@@ -45,14 +48,11 @@ Eigen::Vector3d OctreeSearch::clamp(const Eigen::Vector3d& p) const {
   return q;
 }
 
-void OctreeSearch::prepare() {
-  orientation_ = view_->orientation().term();
-  if (orientation_override_) orientation_.desired_degrees = *orientation_override_;
-  facing_ = orientation_.facing();
+void OctreeSearch::set_orientation_override(std::optional<double> degrees) {
+  orientation_.desired_degrees = degrees ? *degrees : view_->orientation().term().desired_degrees;
 }
 
 Candidate OctreeSearch::evaluate(const Eigen::Vector3d& p, bool require_visible, double bound) {
-  prepare();
   double cheap_cost = 0;
   if (!cheap_terms(p, require_visible, cheap_cost)) return Candidate{p, cheap_cost, false};
   return expensive_terms(p, require_visible, cheap_cost, bound);
@@ -70,7 +70,7 @@ bool OctreeSearch::cheap_terms(const Eigen::Vector3d& p, bool require_visible, d
     double violation;
     if (id == view_->orientation_id()) {
       // The constraint's own term (AbsTermConstraint: |term(cam_x, cam_z)|), its facing
-      // taken once a search (prepare()), under the override when there is one.
+      // taken once a search, under the override when there is one.
       const double xz[2] = {p.x(), p.z()};
       violation = std::abs(orientation_.at(facing_, xz));
     } else if (id == view_->height_id() && height_override_) {
@@ -160,7 +160,6 @@ double OctreeSearch::first_half_size(double requested) const {
 }
 
 Candidate OctreeSearch::run(const Eigen::Vector3d& start, const OctreeSettings& settings) {
-  prepare();
   double half = first_half_size(settings.initial_half_size);
   Eigen::Vector3d centre = clamp(start);
   Candidate best;

@@ -64,8 +64,10 @@ class OctreeSearch {
  public:
   OctreeSearch(const csp::Problem& problem, const CameraProblemView& view);
 
+  // A search lives within one solve: the frame's parameters (the character's facing) are
+  // read when it is made.
   // Per-search overrides of desired values (nullopt = the problem's own).
-  void set_orientation_override(std::optional<double> degrees) { orientation_override_ = degrees; }
+  void set_orientation_override(std::optional<double> degrees);
   void set_height_override(std::optional<double> metres) { height_override_ = metres; }
 
   // Scores one position. With require_visible, invalid candidates (hidden look-at or a
@@ -93,9 +95,6 @@ class OctreeSearch {
   bool cheap_terms(const Eigen::Vector3d& p, bool require_visible, double& cost);
   Candidate expensive_terms(const Eigen::Vector3d& p, bool require_visible, double cheap_cost,
                             double bound);
-  // The orientation term of this search (the problem's, under the override), with the
-  // character's facing computed once: the frame's parameters do not change within a search.
-  void prepare();
 
   static constexpr int kMaxExpensive = 8;
   const csp::Problem* problem_;
@@ -107,9 +106,11 @@ class OctreeSearch {
   // Per candidate: the soft terms (weight x violation) known so far, by view index.
   double term_[kMaxExpensive] = {};
   bool known_[kMaxExpensive] = {};
-  std::optional<double> orientation_override_, height_override_;
-  terms::OrientationTerm orientation_{};
-  terms::OrientationTerm::Facing facing_{};
+  std::optional<double> height_override_;
+  // The orientation term of this search (the problem's, under the override), with the
+  // character's facing computed once, not once a candidate.
+  terms::OrientationTerm orientation_;
+  terms::OrientationTerm::Facing facing_;
   double values_[3] = {0, 0, 0};
   std::uint64_t evaluations_ = 0;
 };

@@ -58,15 +58,14 @@ Q3SolidVolume::Q3SolidVolume(q3::BspTree tree, const LevelTransform& transform)
     const q3::Plane& plane = tree.planes[static_cast<std::size_t>(node.plane)];
     nodes_.push_back({plane.normal.cast<double>(), plane.dist, node.children});
   }
-  leaf_cluster_.reserve(tree.leaves.size());
-  leaf_brushes_.reserve(tree.leaves.size());
+  leaves_.reserve(tree.leaves.size());
   for (const q3::Leaf& leaf : tree.leaves) {
-    leaf_cluster_.push_back(leaf.cluster);
-    leaf_brushes_.push_back(list_of([&](auto&& add) {
+    const BrushList brushes = list_of([&](auto&& add) {
       for (std::int32_t k = 0; k < leaf.leafbrush_count; ++k) {
         add(tree.leafbrushes[static_cast<std::size_t>(leaf.first_leafbrush + k)]);
       }
-    }));
+    });
+    leaves_.push_back({leaf.cluster, brushes});
   }
   // The brush entities, where they stand in the map (model 0 is the world, in the leaves).
   brush_models_ = tree.models.empty() ? 0 : tree.models.size() - 1;
@@ -91,9 +90,9 @@ bool Q3SolidVolume::solid_at_file(const Eigen::Vector3d& p) const {
     const Node& node = nodes_[static_cast<std::size_t>(index)];
     index = node.children[node.normal.dot(p) - node.dist >= 0 ? 0 : 1];
   }
-  const auto leaf = static_cast<std::size_t>(-(index + 1));
-  if (leaf_cluster_[leaf] < 0) return true;  // outside the world, or inside opaque matter
-  if (in_any(leaf_brushes_[leaf], p)) return true;
+  const Leaf& leaf = leaves_[static_cast<std::size_t>(-(index + 1))];
+  if (leaf.cluster < 0) return true;  // outside the world, or inside opaque matter
+  if (in_any(leaf.brushes, p)) return true;
   for (const BrushModel& model : models_) {
     if ((p.array() < model.mins.array()).any() || (p.array() > model.maxs.array()).any()) continue;
     if (in_any(model.brushes, p)) return true;

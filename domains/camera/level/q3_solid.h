@@ -68,6 +68,10 @@ class Q3SolidVolume final : public SolidVolume {
   struct BrushList {
     std::int32_t first = 0, count = 0;
   };
+  struct Leaf {
+    std::int32_t cluster;  // < 0: outside the world or opaque
+    BrushList brushes;
+  };
   struct BrushModel {
     Eigen::Vector3d mins, maxs;
     BrushList brushes;
@@ -78,8 +82,7 @@ class Q3SolidVolume final : public SolidVolume {
 
   LevelTransform transform_;
   std::vector<Node> nodes_;
-  std::vector<std::int32_t> leaf_cluster_;
-  std::vector<BrushList> leaf_brushes_;
+  std::vector<Leaf> leaves_;
   std::vector<BrushModel> models_;  // the brush entities with solid brushes (models 1..n)
   std::vector<std::int32_t> solid_lists_;
   std::vector<SolidBrush> brushes_;  // the map's solid brushes with sides
