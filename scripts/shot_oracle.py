@@ -5,7 +5,8 @@ A tracking shot cannot keep everyone it names framed and visible when, at some i
 camera pose in the shot's region does (three people crossing in a line, two walking one
 behind the other). This script films each scene with the default tracking camera (the
 Python module's `follow`) and judges every frame by the shot's own `framed` and `visible`
-properties (FORMATS.md "Shots"): everyone is *held* when each of those properties scores 1.
+properties (FORMATS.md "Shots"; `evaluate_trace`): everyone is *held* when each of those
+properties scores 1.
 For each frame the camera does not hold everyone, it solves the shot at that instant
 offline with shot-search and with particle-swarm (BUDGET ms each); when neither finds a pose
 that holds everyone, the frame is one no pose holds. It prints, per scene and in total, the
@@ -26,27 +27,26 @@ import sys
 import sightline
 
 
-def holds_everyone(properties):
-    return all(p["score"] >= 0.999 for p in properties if p["kind"] in ("framed", "visible"))
+def held(kinds, scores):
+    """Everyone held: each framed and visible property scores 1."""
+    return all(score >= 0.999 for kind, score in zip(kinds, scores) if kind in ("framed", "visible"))
 
 
-def judge(scene, budget_ms):
-    film = sightline.follow(scene)
-    trace = film["trace"]
-    held = no_pose = 0
-    for row in trace:
-        t = float(row["t"])
-        pose = {"position": [float(row[k]) for k in ("cam_x", "cam_y", "cam_z")],
-                "look_at": [float(row[k]) for k in ("target_x", "target_y", "target_z")],
-                "fov": float(row["fov"]), "roll": float(row["roll"])}
-        if holds_everyone(sightline.evaluate_pose(scene, pose, t)["properties"]):
-            held += 1
+def judge(path, budget_ms):
+    scene = sightline.load_scene(path)  # read once: each frame's solves reuse it
+    trace = sightline.follow(scene)["trace"]
+    judged = sightline.evaluate_trace(scene, trace)
+    kinds = [p["kind"] for p in judged["properties"]]
+    held_frames = no_pose = 0
+    for t, scores in zip(judged["t"], judged["scores"]):
+        if held(kinds, scores):
+            held_frames += 1
             continue
-        kept = any(holds_everyone(sightline.compose(scene, solver=name, time=t,
-                                                     budget_ms=budget_ms)["properties"])
+        kept = any(held(kinds, [p["score"] for p in sightline.compose(
+                       scene, solver=name, time=float(t), budget_ms=budget_ms)["properties"]])
                    for name in ("shot-search", "particle-swarm"))
         no_pose += 0 if kept else 1
-    return len(trace), held, no_pose
+    return len(trace), held_frames, no_pose
 
 
 def main():

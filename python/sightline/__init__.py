@@ -1,19 +1,20 @@
 """sightline: weighted constraint satisfaction with pluggable solvers, and camera control.
 
 Build a problem (ProblemBuilder, or load_problem for .yaml, .wcsp, .cfn and .col files), solve
-it with any registered solver (solvers() lists them), film a scene (follow), compose a shot
-of several people at one instant or judge a pose on it (compose, evaluate_pose) and run suites
-(run_suite, load_results). Bad input raises InputError (a ValueError with file, line, column
+it with any registered solver (solvers() lists them), read a scene once (load_scene), film it
+(follow), compose a shot of several people at one instant, judge a pose or every frame of a
+trace on it (compose, evaluate_pose, evaluate_trace) and run suites (run_suite, load_results). Bad input raises InputError (a ValueError with file, line, column
 and detail); unknown solvers and options raise OptionError.
 """
 import csv as _csv
 
-from ._sightline import (InputError, OptionError, Problem, ProblemBuilder, Result, compose,
-                         evaluate_pose, follow, kinds, load_problem, run_suite, solve, solvers)
+from ._sightline import (InputError, OptionError, Problem, ProblemBuilder, Result, Scene, compose,
+                         evaluate_pose, evaluate_trace, follow, kinds, load_problem, load_scene,
+                         run_suite, solve, solvers)
 
-__all__ = ["InputError", "OptionError", "Problem", "ProblemBuilder", "Result", "compose",
-           "evaluate_pose", "follow", "kinds", "load_problem", "run_suite", "solve", "solvers",
-           "load_results", "to_dataframe"]
+__all__ = ["InputError", "OptionError", "Problem", "ProblemBuilder", "Result", "Scene", "compose",
+           "evaluate_pose", "evaluate_trace", "follow", "kinds", "load_problem", "load_scene",
+           "run_suite", "solve", "solvers", "load_results", "to_dataframe"]
 
 
 def to_dataframe(records):

@@ -361,3 +361,50 @@ def test_a_shot_composed_in_python_is_judged_alike_by_the_program(tmp_path, bina
     assert e.value.line == 1
     with pytest.raises(ValueError, match="no shot"):
         sl.compose(os.path.join(source_dir, "experiments/scenes/open-field.yaml"))
+
+
+def test_a_trace_is_judged_frame_by_frame_as_each_pose_alone(source_dir):
+    """evaluate_trace() against evaluate_pose() at each frame's time: the same satisfaction,
+    feasibility and per-property scores on every tenth frame of a filmed tracking shot; a
+    scene loaded once films and composes as its path does; a frame with no view is judged
+    infeasible, not raised; a trace missing a column or with columns of different lengths,
+    and a scene that is no Scene or path, raise."""
+    path = os.path.join(source_dir, "experiments/scenes/shots/circling-dialogue.yaml")
+    scene = sl.load_scene(path)
+    assert scene.has_shot and scene.frames > 100 and len(scene.people) >= 2
+    film = sl.follow(scene)
+    assert np.array_equal(film["trace"]["cam_x"], sl.follow(path)["trace"]["cam_x"])
+    trace = film["trace"]
+    judged = sl.evaluate_trace(scene, trace)
+    n = len(judged["properties"])
+    assert judged["scores"].shape == judged["measures"].shape == (len(trace), n)
+    assert [(p["kind"], p["targets"]) for p in judged["properties"]] == \
+        [(p["kind"], p["targets"]) for p in sl.evaluate_pose(path, sl.compose(scene))["properties"]]
+    for i in range(0, len(trace), 10):
+        row = trace[i]
+        pose = {"position": [float(row[k]) for k in ("cam_x", "cam_y", "cam_z")],
+                "look_at": [float(row[k]) for k in ("target_x", "target_y", "target_z")],
+                "fov": float(row["fov"]), "roll": float(row["roll"])}
+        alone = sl.evaluate_pose(scene, pose, time=float(row["t"]))
+        assert judged["satisfaction"][i] == pytest.approx(alone["satisfaction"], abs=1e-12)
+        assert judged["feasible"][i] == alone["feasible"]
+        assert judged["why_infeasible"][i] == alone["why_infeasible"]
+        assert list(judged["scores"][i]) == pytest.approx([p["score"] for p in alone["properties"]], abs=1e-12)
+    # A dict of lists is a trace too; a frame looking straight down has no view.
+    columns = {k: [float(v) for v in trace[k]] for k in
+               ("t", "cam_x", "cam_y", "cam_z", "target_x", "target_y", "target_z", "fov", "roll")}
+    columns["target_x"][0], columns["target_z"][0] = columns["cam_x"][0], columns["cam_z"][0]
+    columns["target_y"][0] = columns["cam_y"][0] - 1
+    by_dict = sl.evaluate_trace(path, columns)
+    assert not by_dict["feasible"][0] and "no view" in by_dict["why_infeasible"][0]
+    assert np.array_equal(by_dict["satisfaction"][1:], judged["satisfaction"][1:])
+    with pytest.raises(ValueError, match="no column 'fov'"):
+        sl.evaluate_trace(scene, {k: v for k, v in columns.items() if k != "fov"})
+    with pytest.raises(ValueError, match="'roll' has 1 values"):
+        sl.evaluate_trace(scene, dict(columns, roll=[0.0]))
+    with pytest.raises(ValueError, match="not a finite number"):
+        sl.evaluate_trace(scene, dict(columns, t=[float("nan")] * len(columns["t"])))
+    with pytest.raises(TypeError, match="sightline.Scene or a path"):
+        sl.evaluate_trace(3, trace)
+    with pytest.raises(ValueError, match="no shot"):
+        sl.evaluate_trace(os.path.join(source_dir, "experiments/scenes/open-field.yaml"), trace)
