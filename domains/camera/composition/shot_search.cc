@@ -23,6 +23,8 @@ namespace sightline::camera {
 struct ShotSearchScratch {
   std::vector<std::pair<csp::Score, shot_search_detail::Point>> candidates;
   std::vector<std::pair<csp::Score, shot_search_detail::Point>> sorted;  // candidates, best first
+  std::vector<char> partial, sorted_partial;  // per candidate: scored in part (a lower bound)
+  std::vector<csp::Score> best_few;           // the best full scores, up to `keep`
   std::vector<std::uint32_t> order;
   std::vector<std::pair<int, shot_search_detail::Vantage>> vantages;
   shot_search_detail::Vantage group;
@@ -92,6 +94,9 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     scratch_->candidates.reserve(2048);
     scratch_->sorted.reserve(2048);
     scratch_->order.reserve(2048);
+    scratch_->partial.reserve(2048);
+    scratch_->sorted_partial.reserve(2048);
+    scratch_->best_few.reserve(static_cast<std::size_t>(options_.keep) + 1);
     scratch_->bearings.reserve(64);
     scratch_->group.bearings.reserve(64);
     scratch_->group.elevations.reserve(64);
@@ -110,6 +115,33 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // 1-2. Candidates, each aimed and scored.
   auto& candidates = scratch.candidates;
   candidates.clear();
+  // Only the best `keep` candidates are refined first: once that many are scored, one that
+  // cannot be below the keep-th best is scored without its sight lines and clearance
+  // (Framing::score_below), marked, and sorted after every fully scored one (its score a
+  // lower bound: rescored before an anytime run refines it).
+  const std::size_t keep = static_cast<std::size_t>(options_.keep);
+  auto& best_few = scratch.best_few;  // the best `keep` full scores, best first
+  best_few.clear();
+  auto& partial = scratch.partial;    // per candidate: scored without the scene's terms
+  partial.clear();
+  auto below = [](const csp::Score& a, const csp::Score& b) {
+    return a.hard < b.hard || (a.hard == b.hard && a.soft < b.soft);
+  };
+  auto score_candidate = [&](const Point& x) {
+    bool complete = true;
+    const csp::Score s = best_few.size() < keep ? framing.score(x) : framing.score_below(x, best_few.back(), complete);
+    ++evaluations;
+    candidates.emplace_back(s, x);
+    partial.push_back(complete ? 0 : 1);
+    if (!complete) return;
+    const auto at = std::upper_bound(best_few.begin(), best_few.end(), s, below);
+    if (best_few.size() < keep) {
+      best_few.insert(at, s);
+    } else if (at != best_few.end()) {
+      best_few.insert(at, s);
+      best_few.pop_back();
+    }
+  };
   // A candidate at p aimed at the targets (and, when several are wanted, a second one aimed
   // at `subject` alone: a shot that cannot hold them all may do best on one).
   // With a time limit, the candidates take at most 40% of it, so that the best of them
@@ -124,16 +156,14 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     Point x{p.x(), p.y(), p.z(), 0, 0, fov, roll};
     clamp(x);
     framing.aim(x);
-    candidates.emplace_back(framing.score(x), x);
-    ++evaluations;
+    score_candidate(x);
     // Someone the shot keeps out on screen: the view turned to each side to take them off it.
     std::array<double, 4> shift{};
     if (framing.shifts_away(x, 0.02, shift)) {
       for (int side = 0; side < 4 && !candidates_done(); ++side) {
         Point y = x;
         framing.turn(y, side, shift[static_cast<std::size_t>(side)]);
-        candidates.emplace_back(framing.score(y), y);
-        ++evaluations;
+        score_candidate(y);
       }
     }
     if (subject == nullptr || framing.targets().size() < 2) return;
@@ -142,8 +172,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     const Eigen::Vector3d d = *subject - Eigen::Vector3d(x[0], x[1], x[2]);
     x[3] = signed_degrees(std::atan2(d.x(), d.z()) * kDegrees - (centre_yaw - x[3]));
     x[4] = std::atan2(d.y(), std::hypot(d.x(), d.z())) * kDegrees - centre_pitch;
-    candidates.emplace_back(framing.score(x), x);
-    ++evaluations;
+    score_candidate(x);
   };
   if (start.size() == kDims) {
     // The start's own aim, as offsets from the direction to the centre.
@@ -152,8 +181,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     const csp::Assignment& base = framing.values(x);
     x[3] = signed_degrees(start[3] - base[3]);
     x[4] = start[4] - base[4];
-    candidates.emplace_back(framing.score(x), x);
-    ++evaluations;
+    score_candidate(x);
   }
   // Two subjects at screen points: the exact two-subject poses (toric_framing.h), coarsely.
   if (options_.global && !toric_) toric_ = std::make_unique<ToricFraming>("toric", ToricFraming::Options{32, 16});
@@ -176,8 +204,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       const csp::Assignment& base = framing.values(x);  // offsets from the centre's direction
       x[3] = signed_degrees(toric_result_.best[3] - (base[3] - x[3]));
       x[4] = toric_result_.best[4] - (base[4] - x[4]);
-      candidates.emplace_back(framing.score(x), x);
-      ++evaluations;
+      score_candidate(x);
     }
   }
   // Around an aim point at `scale` times the vantage's distance, bearings (each with its
@@ -242,7 +269,8 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     add(region.min + Eigen::Vector3d(halton(k, 2), halton(k, 3), halton(k, 5))
                          .cwiseProduct(region.max - region.min));
   }
-  // Best first (fewer hard, then soft costs), ties in the order added. Their indices are
+  // Best first (fewer hard, then soft costs; those scored in part after all the others),
+  // ties in the order added. Their indices are
   // sorted, in the scratch (std::stable_sort takes a buffer from the heap): a group's shot
   // makes well over a thousand candidates, which an insertion sort took a millisecond to
   // order.
@@ -250,6 +278,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   order.resize(candidates.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    if (partial[a] != partial[b]) return partial[a] < partial[b];
     const csp::Score& sa = candidates[a].first;
     const csp::Score& sb = candidates[b].first;
     if (sa.hard != sb.hard) return sa.hard < sb.hard;
@@ -260,6 +289,10 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   sorted.clear();
   for (std::uint32_t i : order) sorted.push_back(candidates[i]);
   candidates.swap(sorted);
+  auto& sorted_partial = scratch.sorted_partial;
+  sorted_partial.clear();
+  for (std::uint32_t i : order) sorted_partial.push_back(partial[i]);
+  partial.swap(sorted_partial);
 
   csp::Score best = candidates.front().first;
   Point best_x = candidates.front().second;
@@ -287,9 +320,10 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     auto moved_to = [&](Point y) {
       clamp(y);
       if (y == x) return false;
-      const csp::Score s = framing.score(y);
+      bool complete = false;
+      const csp::Score s = framing.score_below(y, score, complete);
       ++evaluations;
-      if (!s.better_than(score)) return false;
+      if (!complete || !s.better_than(score)) return false;
       score = s;
       x = y;
       return true;
@@ -386,7 +420,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     }
   };
   // Coarsely (to 5 cm and 0.05 degrees) from each of the best few, then finely from the best.
-  const std::size_t keep = std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(options_.keep));
+  const std::size_t refined = std::min(candidates.size(), keep);
   const double coarse = std::max(options_.min_step, 0.05);
   auto refine_finely = [&] {
     csp::Score score = best;
@@ -398,6 +432,11 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // left its fine one unfinished (problem 11 at 2 ms). The fine round runs again at the end
   // only if another candidate has overtaken it.
   constexpr double kClearLead = 0.75;
+  if (candidates.size() > 1 && partial[1]) {  // keep 1: the runner-up's full score, for the test
+    candidates[1].first = framing.score(candidates[1].second);
+    partial[1] = 0;
+    ++evaluations;
+  }
   const bool leader_first =
       options_.global && coarse > options_.min_step && candidates.size() > 1 &&
       candidates[0].first.feasible() &&
@@ -406,7 +445,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // With a time limit, the coarse refinements stop at 70% of it, leaving the best's fine one
   // the rest.
   const double coarse_seconds = 0.7 * context.limits.time_limit_seconds;
-  for (std::size_t i = 0; i < keep && !budget.exhausted(evaluations, iterations); ++i) {
+  for (std::size_t i = 0; i < refined && !budget.exhausted(evaluations, iterations); ++i) {
     if (i > 0 && coarse_seconds > 0 && budget.elapsed_seconds() > coarse_seconds) break;
     refine(candidates[i].first, candidates[i].second, options_.global || options_.hold_position ? 1.0 : 0.25, coarse);
     if (i == 0 && leader_first && !budget.exhausted(evaluations, iterations)) {
@@ -425,10 +464,14 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   if (context.runs_to_the_limit() && options_.global) {
     std::mt19937_64 rng(context.seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::size_t next = keep;
+    std::size_t next = refined;
     std::uint64_t halton_index = static_cast<std::uint64_t>(options_.samples);
     for (std::uint64_t restart = 0; !budget.exhausted(evaluations, iterations); ++restart) {
       if (next < candidates.size()) {
+        if (partial[next]) {  // its score was a lower bound
+          candidates[next].first = framing.score(candidates[next].second);
+          ++evaluations;
+        }
         refine(candidates[next].first, candidates[next].second, 1.0, coarse);
         ++next;
         continue;

@@ -31,7 +31,10 @@
 // Every candidate is scored by the problem itself (the problem's own score, computed with
 // one view shared by the properties, and the terms that read the camera's position only
 // kept while a step only turns the view), so the result is the problem's optimum as far
-// as the search found it, hard constraints first.
+// as the search found it, hard constraints first. A point that only has to be compared
+// (a step against the pose it would replace, a candidate once `keep` are scored against
+// the keep-th best) asks its sight lines and clearance only when the other terms leave it
+// able to win (Framing::score_below): the same decisions, fewer queries.
 #pragma once
 
 #include <cstdint>

@@ -47,6 +47,8 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
   storage_.properties.assign(n, nullptr);
   storage_.position_only.assign(n, 0);
   storage_.at_position.assign(n, csp::Score{});
+  storage_.queries.assign(n, 0);
+  storage_.terms.assign(n, csp::Score{});
   for (csp::ConstraintId id = 0; id < n; ++id) {
     const csp::Constraint& c = problem.constraint(id);
     const auto* property = dynamic_cast<const ShotPropertyConstraint*>(&c);
@@ -55,6 +57,7 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
     const bool on_position = std::all_of(scope.begin(), scope.end(),
                                          [](csp::VariableId v) { return v < 3; });
     storage_.position_only[id] = property ? property->position_only() : on_position;
+    storage_.queries[id] = c.query_cost() > 0;
   }
 }
 
@@ -79,6 +82,51 @@ csp::Score Framing::score(const Point& x) {
     }
     if (storage_.position_only[id]) storage_.at_position[id] = term;
     total += term;
+  }
+  scored_position_ = view->position();
+  has_position_ = true;
+  return total;
+}
+
+csp::Score Framing::score_below(const Point& x, const csp::Score& bound, bool& complete) {
+  complete = true;
+  const csp::Assignment& v = values(x);
+  const std::optional<View> view = View::of(owner_->pose(v));
+  if (!view) return problem_->score(v);
+  const bool same_position = has_position_ && view->position() == scored_position_;
+  auto term_of = [&](csp::ConstraintId id) {
+    if (const ShotPropertyConstraint* property = storage_.properties[id]) {
+      return property->score_of(1 - property->score(*view));
+    }
+    return problem_->constraint_score(id, v);
+  };
+  // First the terms that ask nothing of the scene, or are kept from the last position.
+  const std::size_t n = storage_.properties.size();
+  csp::Score partial;
+  bool left_out = false;
+  for (csp::ConstraintId id = 0; id < n; ++id) {
+    if (storage_.position_only[id] && same_position) {
+      storage_.terms[id] = storage_.at_position[id];
+    } else if (storage_.queries[id]) {
+      left_out = true;
+      continue;
+    } else {
+      storage_.terms[id] = term_of(id);
+    }
+    partial += storage_.terms[id];
+  }
+  if (left_out && (partial.hard > bound.hard || (partial.hard == bound.hard && partial.soft >= bound.soft))) {
+    complete = false;
+    return partial;
+  }
+  // Then the rest, and the sum in the problem's order (score()'s value to the bit).
+  csp::Score total;
+  for (csp::ConstraintId id = 0; id < n; ++id) {
+    if (storage_.queries[id] && !(storage_.position_only[id] && same_position)) {
+      storage_.terms[id] = term_of(id);
+    }
+    if (storage_.position_only[id]) storage_.at_position[id] = storage_.terms[id];
+    total += storage_.terms[id];
   }
   scored_position_ = view->position();
   has_position_ = true;

@@ -40,6 +40,10 @@ struct FramingStorage {
   std::vector<const ShotPropertyConstraint*> properties;
   std::vector<char> position_only;
   std::vector<csp::Score> at_position;
+  // Per constraint: whether it asks the scene (sight lines, clearance: query_cost() > 0),
+  // and its term at the point being scored.
+  std::vector<char> queries;
+  std::vector<csp::Score> terms;
 };
 
 // The search's view of one problem: the targets' centre, and the point -> assignment map.
@@ -61,6 +65,14 @@ class Framing {
   // only (the `visible` properties' sight lines, clearance) are kept from the last point
   // scored when x has not moved, only turned or zoomed (most of a compass search's steps).
   csp::Score score(const Point& x);
+  // score(x) when it is below `bound` (fewer hard, or as many and less soft: the order the
+  // search sorts in), and then `complete` is set; else a score at least `bound` that is no
+  // more than score(x) (the terms that ask the scene left out: the others already cost as
+  // much) and `complete` is cleared. The same decisions as comparing score(x) with `bound`,
+  // without the sight lines and clearance of most rejected points (a compass search's
+  // steps, the candidates that cannot enter the best few). Terms that cannot be negative
+  // added in the same order with some left out sum to no more (rounding is monotone).
+  csp::Score score_below(const Point& x, const csp::Score& bound, bool& complete);
 
   // How far (screen units, > 0) the view at x must turn to take the people the shot keeps
   // out who are on screen there off each edge of the image (0 left, 1 right, 2 bottom,

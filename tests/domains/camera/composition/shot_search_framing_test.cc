@@ -89,36 +89,38 @@ TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) 
   EXPECT_GT(bob_moved, 40);
 }
 
+// Three people among pillars, with every kind of property, one of them hard.
+constexpr const char* kThreeAmongPillars =
+    "name: three among pillars\n"
+    "boxes:\n"
+    "  - {min: [-0.3, 0, 1.5], max: [0.3, 3, 2.1]}\n"
+    "  - {min: [1.5, 0, 2.5], max: [2.2, 1.2, 3.2]}\n"
+    "actors:\n"
+    "  - {name: ann, trajectory: [{t: 0, position: [-1, 0, 0], yaw: 0}]}\n"
+    "  - {name: ben, trajectory: [{t: 0, position: [1, 0, 0.5], yaw: 180}]}\n"
+    "  - {name: cal, trajectory: [{t: 0, position: [0, 0, -1.5], yaw: 90}]}\n"
+    "shot:\n"
+    "  fov: [30, 70]\n"
+    "  roll: [-20, 20]\n"
+    "  region: {min: [-5, 0.3, 1], max: [5, 4, 7]}\n"
+    "  clearance: 0.3\n"
+    "  properties:\n"
+    "    - {kind: framed, target: ann}\n"
+    "    - {kind: visible, target: ann, range: [0.6, 1]}\n"
+    "    - {kind: visible, target: ben, hard: true}\n"
+    "    - {kind: framed, target: cal, range: [0, 0], weight: 2}\n"
+    "    - {kind: screen_position, target: ben, at: [0.6, 0.5]}\n"
+    "    - {kind: angle_horizontal, target: ann, range: [-40, 40]}\n"
+    "    - {kind: distance, target: ben, range: [3, 5]}\n"
+    "    - {kind: size, target: ann, range: [0.3, 0.5]}\n"
+    "    - {kind: order, targets: [ann, ben]}\n";
+
 // Framing::score keeps the terms that read the camera's position only (visible, distance,
 // the vantage angles, clearance) while the camera turns or zooms without moving; it must
 // give exactly the problem's own score, whatever the sequence of points: moves, turns,
 // zooms, rolls, a point whose view is invalid (a field of view of 0) and back.
 TEST(ShotSearchFraming, ScoreIsTheProblemsScoreWhetherTheCameraMovesOrOnlyTurns) {
-  FramedShot shot(
-      "name: three among pillars\n"
-      "boxes:\n"
-      "  - {min: [-0.3, 0, 1.5], max: [0.3, 3, 2.1]}\n"
-      "  - {min: [1.5, 0, 2.5], max: [2.2, 1.2, 3.2]}\n"
-      "actors:\n"
-      "  - {name: ann, trajectory: [{t: 0, position: [-1, 0, 0], yaw: 0}]}\n"
-      "  - {name: ben, trajectory: [{t: 0, position: [1, 0, 0.5], yaw: 180}]}\n"
-      "  - {name: cal, trajectory: [{t: 0, position: [0, 0, -1.5], yaw: 90}]}\n"
-      "shot:\n"
-      "  fov: [30, 70]\n"
-      "  roll: [-20, 20]\n"
-      "  region: {min: [-5, 0.3, 1], max: [5, 4, 7]}\n"
-      "  clearance: 0.3\n"
-      "  properties:\n"
-      "    - {kind: framed, target: ann}\n"
-      "    - {kind: visible, target: ann, range: [0.6, 1]}\n"
-      "    - {kind: visible, target: ben, hard: true}\n"
-      "    - {kind: framed, target: cal, range: [0, 0], weight: 2}\n"
-      "    - {kind: screen_position, target: ben, at: [0.6, 0.5]}\n"
-      "    - {kind: angle_horizontal, target: ann, range: [-40, 40]}\n"
-      "    - {kind: distance, target: ben, range: [3, 5]}\n"
-      "    - {kind: size, target: ann, range: [0.3, 0.5]}\n"
-      "    - {kind: order, targets: [ann, ben]}\n",
-      "three.yaml");
+  FramedShot shot(kThreeAmongPillars, "three.yaml");
   const csp::Problem& problem = shot.owner.problem();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -157,6 +159,64 @@ TEST(ShotSearchFraming, ScoreIsTheProblemsScoreWhetherTheCameraMovesOrOnlyTurns)
   EXPECT_GT(moves, 80);
   EXPECT_GT(turns, 200);
   EXPECT_GT(differing_visible, 10);
+}
+
+// Framing::score_below against the problem's full evaluation: below the bound it is the
+// problem's score to the bit; otherwise it says so with a score at least the bound and no
+// more than the problem's, so that a search comparing with the bound decides alike. Bounds
+// just above, at and below each point's score and far from it; moves and turns mixed, so
+// that a point left in part (its position's terms not asked) does not spoil the terms kept
+// for the next turn.
+TEST(ShotSearchFraming, ScoreBelowDecidesAsTheProblemsScore) {
+  FramedShot shot(kThreeAmongPillars, "three.yaml");
+  const csp::Problem& problem = shot.owner.problem();
+  auto below = [](const csp::Score& a, const csp::Score& b) {
+    return a.hard < b.hard || (a.hard == b.hard && a.soft < b.soft);
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  shot_search_detail::Point x{0, 1.7, 4, 0, 0, 50, 0};
+  int complete = 0, in_part = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    if (unit(rng) < 0.4) {
+      x[0] = -5 + 10 * unit(rng);
+      x[1] = 0.3 + 3.7 * unit(rng);
+      x[2] = 1 + 6 * unit(rng);
+    } else {
+      x[3] += 20 * (unit(rng) - 0.5);
+      x[4] += 20 * (unit(rng) - 0.5);
+      x[5] = 30 + 40 * unit(rng);
+    }
+    const csp::Score full = problem.score(shot.framing.values(x));
+    const double shifts[] = {-1, -1e-9, 0, 1e-9, 1};
+    csp::Score bound = full;
+    const int pick = static_cast<int>(unit(rng) * 7);
+    if (pick < 5) {
+      bound.soft += shifts[pick];
+    } else {
+      bound.hard += pick == 5 ? 1 : -1;
+    }
+    bool whole = false;
+    const csp::Score got = shot.framing.score_below(x, bound, whole);
+    if (whole) {
+      ++complete;
+      ASSERT_EQ(got.hard, full.hard) << trial;
+      ASSERT_EQ(got.soft, full.soft) << trial;
+    } else {
+      ++in_part;
+      ASSERT_FALSE(below(got, bound)) << trial;
+      ASSERT_FALSE(below(full, bound)) << trial;
+      ASSERT_LE(got.hard, full.hard) << trial;
+      ASSERT_LE(got.soft, full.soft) << trial;
+    }
+    ASSERT_EQ(below(full, bound), whole && below(got, bound)) << trial;
+    // The kept terms still give the problem's score for the next point, whatever this was.
+    const csp::Score fast = shot.framing.score(x);
+    ASSERT_EQ(fast.hard, full.hard) << trial;
+    ASSERT_EQ(fast.soft, full.soft) << trial;
+  }
+  EXPECT_GT(complete, 100);
+  EXPECT_GT(in_part, 50);
 }
 
 }  // namespace
