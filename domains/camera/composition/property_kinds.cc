@@ -1,6 +1,7 @@
 #include "sightline/domains/camera/composition/property_kinds.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -28,6 +29,38 @@ std::vector<double> read_numbers(const csp::Spec& field, std::size_t count, cons
 
 double read_nothing(ShotProperty&, const csp::Spec&) { return 1; }
 
+// A framed property's count when the eight outer samples of `body` (those at 0.1 and 0.9 of
+// each side: the corners of the samples' box) settle it: all of them in front and inside
+// `rect` -> every sample inside (27); all in front and beyond one edge of it -> none (0).
+// Each sample is a mix of the eight, and a view maps a box in front of it to a convex shape
+// whose extremes are corners', so the other nineteen land between them. The margins (1e-9
+// m of depth, 1e-9 screen units) are far above the rounding of a projection (1e-15), so the
+// count is the one the 27 projections give, to the bit. -1 when the corners do not settle it.
+int framed_by_outer_samples(const View& view, const Aabb& body, const Eigen::Vector4d& rect) {
+  constexpr double kMargin = 1e-9;
+  const Eigen::Vector3d lo = body.min + 0.1 * (body.max - body.min);
+  const Eigen::Vector3d hi = body.min + 0.9 * (body.max - body.min);
+  bool inside = true;
+  std::array<bool, 4> beyond{true, true, true, true};  // left, right, below, above
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d q((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z());
+    if (!(view.depth(q) > View::kNearDepth + kMargin)) return -1;
+    const std::optional<Eigen::Vector2d> s = view.project(q);
+    if (!s) return -1;
+    inside = inside && s->x() >= rect[0] + kMargin && s->x() <= rect[2] - kMargin &&
+             s->y() >= rect[1] + kMargin && s->y() <= rect[3] - kMargin;
+    beyond[0] = beyond[0] && s->x() < rect[0] - kMargin;
+    beyond[1] = beyond[1] && s->x() > rect[2] + kMargin;
+    beyond[2] = beyond[2] && s->y() < rect[1] - kMargin;
+    beyond[3] = beyond[3] && s->y() > rect[3] + kMargin;
+  }
+  if (inside) return kPersonSamples;
+  for (bool b : beyond) {
+    if (b) return 0;
+  }
+  return -1;
+}
+
 ShotPropertyKind framed_kind() {
   ShotPropertyKind k;
   k.name = "framed";
@@ -46,6 +79,9 @@ ShotPropertyKind framed_kind() {
     return 1.0;
   };
   k.measure = [](const ShotProperty& p, const MeasureContext& c) {
+    if (const int settled = framed_by_outer_samples(c.view, target(c, 0).body, p.rect); settled >= 0) {
+      return static_cast<double>(settled) / kPersonSamples;
+    }
     int inside = 0;
     for (const Eigen::Vector3d& q : person_samples(target(c, 0).body)) {
       const std::optional<Eigen::Vector2d> s = c.view.project(q);

@@ -4,8 +4,11 @@
 // hide), roll 90, the order of two people.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -236,6 +239,53 @@ TEST(ShotMeasures, FramedCountsTheSamplesInsideTheRectangle) {
   // x = -1 project to sx = 0.5 (on the rectangle's edge: inside), those at x = -1.24 to the
   // right half, those at x = -0.76 to the left half: 18 of 27 inside.
   EXPECT_NEAR(measure(s, pose({-1, 0.9, -10}, {-1, 0.9, 0})).measure, 18.0 / 27, 1e-12);
+}
+
+// framed settles from the eight outer samples when they are all inside the rectangle or all
+// beyond one edge of it, and counts the 27 otherwise: from random poses round alice (near
+// and far, from all sides, some with her behind the camera or half out of the image, rolls
+// and narrow rectangles), the measure must be this test's own count of her 27 samples
+// (FORMATS.md's pinhole, worked here) to the bit, and every kind of case must occur.
+TEST(ShotMeasures, FramedIsTheCountOfAllTwentySevenSamplesFromAnyPose) {
+  const Scene s = people_scene("", "    - {kind: framed, target: alice, rect: [0.2, 0.1, 0.7, 0.95]}\n");
+  CompositionProblem problem(s, *s.shot(), 0);
+  const PersonAtTime& alice = problem.world().people()[*problem.world().find("alice")];
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int all = 0, none = 0, some = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    CameraPose c = pose(alice.aim + Eigen::Vector3d(6 * unit(rng), 2 * unit(rng), 6 * unit(rng)),
+                        alice.aim + Eigen::Vector3d(1.5 * unit(rng), 1.5 * unit(rng), 1.5 * unit(rng)),
+                        40 + 30 * unit(rng), 1, trial % 3 == 0 ? 25 * unit(rng) : 0);
+    const std::optional<View> view = View::of(c);
+    if (!view) continue;
+    // The count, by FORMATS.md: d = q - p, depth d.f > 0.05, sx and sy from the view's axes.
+    const Eigen::Vector3d f = (c.look_at - c.position).normalized();
+    const Eigen::Vector3d r0 = f.cross(Eigen::Vector3d::UnitY()).normalized();
+    const Eigen::Vector3d u0 = r0.cross(f);
+    const double roll = c.roll * 3.14159265358979323846 / 180;
+    const Eigen::Vector3d r = std::cos(roll) * r0 + std::sin(roll) * u0;
+    const Eigen::Vector3d u = std::cos(roll) * u0 - std::sin(roll) * r0;
+    const double t = std::tan(c.fov * 3.14159265358979323846 / 360);
+    const Eigen::Vector3d size = alice.body.max - alice.body.min;
+    int inside = 0;
+    for (double i : {0.1, 0.5, 0.9}) {
+      for (double j : {0.1, 0.5, 0.9}) {
+        for (double k : {0.1, 0.5, 0.9}) {
+          const Eigen::Vector3d d = alice.body.min + Eigen::Vector3d(i * size.x(), j * size.y(), k * size.z()) - c.position;
+          const double z = d.dot(f);
+          if (!(z > 0.05)) continue;
+          const double sx = (1 + d.dot(r) / (z * t)) / 2, sy = (1 + d.dot(u) / (z * t)) / 2;
+          inside += sx >= 0.2 && sx <= 0.7 && sy >= 0.1 && sy <= 0.95;
+        }
+      }
+    }
+    ASSERT_EQ(measure(s, c).measure, inside / 27.0) << trial;
+    (inside == 27 ? all : inside == 0 ? none : some) += 1;
+  }
+  EXPECT_GT(all, 100);
+  EXPECT_GT(none, 100);
+  EXPECT_GT(some, 100);
 }
 
 TEST(ShotMeasures, CountClearAgreesWithEachSightLine) {
