@@ -268,6 +268,31 @@ Score Problem::score(std::span<const double> values) const {
   return total;
 }
 
+Score Problem::score_below(std::span<const double> values, const Score& bound, bool& complete,
+                           std::span<Score> terms) const {
+  if (terms.size() < constraints_.size()) {
+    throw std::invalid_argument("score_below: terms needs one entry per constraint");
+  }
+  Score partial;
+  bool left_out = false;
+  for (ConstraintId id = 0; id < constraints_.size(); ++id) {
+    if (constraints_[id]->query_cost() > 0) {
+      left_out = true;
+      continue;
+    }
+    terms[id] = constraint_score(id, values);
+    partial += terms[id];
+  }
+  complete = !left_out || partial.hard < bound.hard || (partial.hard == bound.hard && partial.soft < bound.soft);
+  if (!complete) return partial;
+  Score total;
+  for (ConstraintId id = 0; id < constraints_.size(); ++id) {
+    if (constraints_[id]->query_cost() > 0) terms[id] = constraint_score(id, values);
+    total += terms[id];
+  }
+  return total;
+}
+
 std::vector<ConstraintCost> Problem::breakdown(std::span<const double> values) const {
   std::vector<ConstraintCost> out;
   out.reserve(constraints_.size());

@@ -132,6 +132,17 @@ class Problem {
   Score score(std::span<const double> values) const;
   double cost(std::span<const double> values) const { return score(values).soft; }
   bool is_feasible(std::span<const double> values) const { return score(values).feasible(); }
+  // For a search that keeps an assignment only when it beats `bound`: score(values), with
+  // `complete` set, whenever it may be below `bound` (fewer hard, or as many and less soft);
+  // else possibly a score at least `bound` and no more than score(values), with `complete`
+  // cleared. The
+  // constraints that ask nothing of an outside world (query_cost() 0) are scored first, the
+  // others only when those leave the assignment able to win; a complete score is summed in
+  // id order, score(values) to the bit (terms >= 0 added in the same order with some left
+  // out sum to no more: rounding is monotone). `terms` is the caller's scratch, one per
+  // constraint.
+  Score score_below(std::span<const double> values, const Score& bound, bool& complete,
+                    std::span<Score> terms) const;
   // Every constraint's violation and weighted cost, in id order.
   std::vector<ConstraintCost> breakdown(std::span<const double> values) const;
   // Weighted score contribution of one constraint.

@@ -46,6 +46,82 @@ TEST(Problem, ScoreSeparatesHardViolationFromSoftCost) {
   EXPECT_DOUBLE_EQ(p->cost(good), 0.0);
 }
 
+// A constraint that counts its calls and says it asks an outside world (query_cost 1): the
+// violation |x - target| x scale, real-valued so sums round.
+class QueriedDistance : public Constraint {
+ public:
+  QueriedDistance(VariableId x, double target, double scale, double weight, bool hard, int* calls)
+      : Constraint({x}, weight, hard), target_(target), scale_(scale), calls_(calls) {}
+  std::string_view kind() const override { return "test.queried"; }
+  double query_cost() const override { return 1; }
+  double violation(std::span<const double> values) const override {
+    ++*calls_;
+    return std::abs(values[scope()[0]] - target_) * scale_;
+  }
+
+ private:
+  double target_, scale_;
+  int* calls_;
+};
+
+// score_below against score on random assignments of a problem mixing constraints with and
+// without queries, hard and soft, with bounds just above, at and below each score and far
+// from it: a complete answer is score() to the bit; an incomplete one is at least the bound
+// and no more than score() (so comparing with the bound decides as score() does), and asked
+// none of the queried constraints.
+TEST(Problem, ScoreBelowDecidesAsTheFullScoreWithFewerQueries) {
+  Problem p("mixed");
+  std::vector<VariableId> v;
+  for (int i = 0; i < 4; ++i) v.push_back(p.add_variable("v" + std::to_string(i), Domain::real_interval(-3, 3)));
+  int calls = 0;
+  p.add_constraint(std::make_unique<QueriedDistance>(v[0], 0.3, 1.7, 0.9, false, &calls));
+  p.add_constraint(std::make_unique<AbsDeviation>(std::vector<VariableId>{v[1]}, std::vector<double>{1}, 0, 0.7, 1.3));
+  p.add_constraint(std::make_unique<QueriedDistance>(v[2], -1.1, 0.37, 1, true, &calls));
+  p.add_constraint(std::make_unique<LinearConstraint>(std::vector<VariableId>{v[0], v[3]}, std::vector<double>{1, 2},
+                                                      Relation::kLessEqual, 0.5, 0.7));
+  p.add_constraint(std::make_unique<AbsDeviation>(std::vector<VariableId>{v[3]}, std::vector<double>{1}, 0, -0.4, 2.1, true));
+  std::vector<Score> terms(p.num_constraints());
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(-3, 3);
+  auto below = [](const Score& a, const Score& b) { return a.hard < b.hard || (a.hard == b.hard && a.soft < b.soft); };
+  int complete_count = 0, partial_count = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Assignment a = {unit(rng), unit(rng), unit(rng), unit(rng)};
+    const Score full = p.score(a);
+    Score bound = full;
+    switch (trial % 6) {
+      case 0: bound.soft += 1e-9; break;
+      case 1: break;
+      case 2: bound.soft -= 1e-9; break;
+      case 3: bound.soft += 10; break;
+      case 4: bound.hard += 1; break;
+      default: bound.hard -= 1; break;
+    }
+    bool complete = false;
+    calls = 0;
+    const Score got = p.score_below(a, bound, complete, terms);
+    if (complete) {
+      ++complete_count;
+      ASSERT_EQ(got.hard, full.hard) << trial;
+      ASSERT_EQ(got.soft, full.soft) << trial;
+      EXPECT_EQ(calls, 2) << trial;
+    } else {
+      ++partial_count;
+      ASSERT_FALSE(below(got, bound)) << trial;
+      ASSERT_FALSE(below(full, bound)) << trial;
+      ASSERT_LE(got.hard, full.hard) << trial;
+      ASSERT_LE(got.soft, full.soft) << trial;
+      EXPECT_EQ(calls, 0) << trial;
+    }
+    ASSERT_EQ(below(full, bound), complete && below(got, bound)) << trial;
+  }
+  EXPECT_GT(complete_count, 300);
+  EXPECT_GT(partial_count, 150);
+  std::vector<Score> short_terms(2);
+  bool complete = false;
+  EXPECT_THROW(p.score_below(Assignment{0, 0, 0, 0}, Score{}, complete, short_terms), std::invalid_argument);
+}
+
 TEST(Problem, BreakdownListsEveryConstraintInIdOrder) {
   const auto p = small_problem();
   const auto parts = p->breakdown(Assignment{2, 2, 1});

@@ -65,10 +65,10 @@ class Framing {
   // only (the `visible` properties' sight lines, clearance) are kept from the last point
   // scored when x has not moved, only turned or zoomed (most of a compass search's steps).
   csp::Score score(const Point& x);
-  // score(x) when it is below `bound` (fewer hard, or as many and less soft: the order the
-  // search sorts in), and then `complete` is set; else a score at least `bound` that is no
-  // more than score(x) (the terms that ask the scene left out: the others already cost as
-  // much) and `complete` is cleared. The same decisions as comparing score(x) with `bound`,
+  // score(x), with `complete` set, whenever it may be below `bound` (fewer hard, or as many
+  // and less soft: the order the search sorts in); else possibly a score at least `bound`
+  // that is no more than score(x) (the terms that ask the scene left out: the others
+  // already cost as much), with `complete` cleared. The same decisions as comparing score(x) with `bound`,
   // without the sight lines and clearance of most rejected points (a compass search's
   // steps, the candidates that cannot enter the best few). Terms that cannot be negative
   // added in the same order with some left out sum to no more (rounding is monotone).

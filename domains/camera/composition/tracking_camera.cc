@@ -85,7 +85,8 @@ TrackingCamera::TrackingCamera(const Scene& scene, TrackingOptions options)
       problem_(scene, shot_, scene.trajectory().start_time()),
       refine_(scene, aimed_shot_, scene.trajectory().start_time()),
       ahead_(scene, aimed_shot_, scene.trajectory().start_time(), options_.foresight),
-      turn_(scene, turn_shot_, scene.trajectory().start_time()) {
+      turn_(scene, turn_shot_, scene.trajectory().start_time()),
+      sweep_terms_(ahead_.problem().num_constraints()) {
   solvers::SolverRegistry& registry = solvers::SolverRegistry::global();
   register_composition_solvers(registry);
   global_ = registry.create(options_.solver);
@@ -175,8 +176,12 @@ void TrackingCamera::sweep_slice(std::size_t count) {
       has_best_ = false;
     }
     sweep_pose(sweep_cursor_, centre, candidate);
-    const csp::Score score = ahead_.problem().score(ahead_.pose_values(candidate));
-    if (!has_best_ || score.better_than(best_score_)) {
+    // A candidate that cannot beat this sweep's best skips its sight lines.
+    bool complete = true;
+    const auto values = ahead_.pose_values(candidate);
+    const csp::Score score = has_best_ ? ahead_.problem().score_below(values, best_score_, complete, sweep_terms_)
+                                       : ahead_.problem().score(values);
+    if (complete && (!has_best_ || score.better_than(best_score_))) {
       has_best_ = true;
       best_score_ = score;
       best_offset_ = candidate.position - centre;

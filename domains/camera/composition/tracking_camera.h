@@ -41,6 +41,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "sightline/domains/camera/camera_controller.h"
 #include "sightline/domains/camera/composition/composition_problem.h"
@@ -137,6 +138,7 @@ class TrackingCamera : public CameraController {
   std::size_t sweep_cursor_ = 0, sweep_count_ = 16;
   bool has_best_ = false, ready_ = false;  // this sweep has a best; the last one's is ready
   csp::Score best_score_;
+  std::vector<csp::Score> sweep_terms_;  // ahead_'s terms of a candidate (Problem::score_below)
   // Bests as offsets from the people's centre, so they move along with the people.
   Eigen::Vector3d best_offset_ = Eigen::Vector3d::Zero(), ready_offset_ = Eigen::Vector3d::Zero();
   bool started_ = false;
