@@ -20,7 +20,8 @@
 // points of the region, each looking at the people) with
 // **foresight**: the shot's framed and visible properties also scored 0.5 s and 1 s on, the
 // camera carried along with the people (CompositionProblem's Foresight), so a pose the
-// pillar or bus about to pass spoils ranks low; a sweep of 192 takes 12-24 frames. When the
+// pillar or bus about to pass spoils ranks low; a sweep of 192 takes 12-24 frames, and a
+// candidate asks its sight lines only when it can still beat the sweep's best so far. When the
 // aimed-for pose breaks a rule, a global solve (the configured solver, with foresight)
 // replaces it. When it loses someone (a framed or visible property below its range) or its
 // satisfaction falls `resolve_drop` below the last global or sweep pose's, the last sweep's
