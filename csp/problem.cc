@@ -283,7 +283,7 @@ Score Problem::score_below(std::span<const double> values, const Score& bound, b
     terms[id] = constraint_score(id, values);
     partial += terms[id];
   }
-  complete = !left_out || partial.hard < bound.hard || (partial.hard == bound.hard && partial.soft < bound.soft);
+  complete = !left_out || partial.before(bound);
   if (!complete) return partial;
   Score total;
   for (ConstraintId id = 0; id < constraints_.size(); ++id) {

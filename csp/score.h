@@ -20,6 +20,11 @@ struct Score {
     if (hard > other.hard + kTol * (1 + other.hard)) return false;
     return soft < other.soft - kTol * (1 + (other.soft < 0 ? -other.soft : other.soft));
   }
+  // Strictly before `other` in the exact lexicographic order (fewer hard, or as many and less
+  // soft; no tolerance): the order candidates are sorted in and bounded scores compare in.
+  bool before(const Score& other) const {
+    return hard < other.hard || (hard == other.hard && soft < other.soft);
+  }
   Score operator+(const Score& o) const { return {hard + o.hard, soft + o.soft}; }
   Score operator-(const Score& o) const { return {hard - o.hard, soft - o.soft}; }
   Score& operator+=(const Score& o) {

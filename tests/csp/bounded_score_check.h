@@ -10,11 +10,6 @@
 
 namespace sightline::csp {
 
-// Fewer hard, or as many and less soft: the order the bounded scores compare in.
-inline bool lexicographically_below(const Score& a, const Score& b) {
-  return a.hard < b.hard || (a.hard == b.hard && a.soft < b.soft);
-}
-
 inline void expect_bounded_score(const Score& got, bool complete, const Score& full, const Score& bound,
                                  int trial) {
   SCOPED_TRACE(trial);
@@ -22,12 +17,12 @@ inline void expect_bounded_score(const Score& got, bool complete, const Score& f
     EXPECT_EQ(got.hard, full.hard);
     EXPECT_EQ(got.soft, full.soft);
   } else {
-    EXPECT_FALSE(lexicographically_below(got, bound));
-    EXPECT_FALSE(lexicographically_below(full, bound));
+    EXPECT_FALSE(got.before(bound));
+    EXPECT_FALSE(full.before(bound));
     EXPECT_LE(got.hard, full.hard);
     EXPECT_LE(got.soft, full.soft);
   }
-  EXPECT_EQ(lexicographically_below(full, bound), complete && lexicographically_below(got, bound));
+  EXPECT_EQ(full.before(bound), complete && got.before(bound));
 }
 
 }  // namespace sightline::csp

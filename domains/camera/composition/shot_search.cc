@@ -124,9 +124,6 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   best_few.clear();
   auto& partial = scratch.partial;    // per candidate: scored without the scene's terms
   partial.clear();
-  auto below = [](const csp::Score& a, const csp::Score& b) {
-    return a.hard < b.hard || (a.hard == b.hard && a.soft < b.soft);
-  };
   auto score_candidate = [&](const Point& x) {
     bool complete = true;
     const csp::Score s = best_few.size() < keep ? framing.score(x) : framing.score_below(x, best_few.back(), complete);
@@ -134,7 +131,8 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     candidates.emplace_back(s, x);
     partial.push_back(complete ? 0 : 1);
     if (!complete) return;
-    const auto at = std::upper_bound(best_few.begin(), best_few.end(), s, below);
+    const auto at = std::upper_bound(best_few.begin(), best_few.end(), s,
+                                     [](const csp::Score& a, const csp::Score& b) { return a.before(b); });
     if (best_few.size() < keep) {
       best_few.insert(at, s);
     } else if (at != best_few.end()) {

@@ -115,7 +115,7 @@ csp::Score Framing::score_below(const Point& x, const csp::Score& bound, bool& c
     }
     partial += storage_.terms[id];
   }
-  if (left_out && (partial.hard > bound.hard || (partial.hard == bound.hard && partial.soft >= bound.soft))) {
+  if (left_out && !partial.before(bound)) {
     complete = false;
     return partial;
   }
