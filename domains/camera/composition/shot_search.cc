@@ -21,9 +21,13 @@ namespace sightline::camera {
 // What a solve works in, kept between solves so a tracking camera's frames allocate nothing
 // once the vectors have grown.
 struct ShotSearchScratch {
-  std::vector<std::pair<csp::Score, shot_search_detail::Point>> candidates;
-  std::vector<std::pair<csp::Score, shot_search_detail::Point>> sorted;  // candidates, best first
-  std::vector<char> partial, sorted_partial;  // per candidate: scored in part (a lower bound)
+  struct Candidate {
+    csp::Score score;
+    shot_search_detail::Point x;
+    bool partial = false;  // scored without the scene's terms: score is a lower bound
+  };
+  std::vector<Candidate> candidates;
+  std::vector<Candidate> sorted;  // candidates, best first
   std::vector<csp::Score> best_few;           // the best full scores, up to `keep`
   std::vector<std::uint32_t> order;
   std::vector<std::pair<int, shot_search_detail::Vantage>> vantages;
@@ -94,8 +98,6 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     scratch_->candidates.reserve(2048);
     scratch_->sorted.reserve(2048);
     scratch_->order.reserve(2048);
-    scratch_->partial.reserve(2048);
-    scratch_->sorted_partial.reserve(2048);
     scratch_->best_few.reserve(static_cast<std::size_t>(options_.keep) + 1);
     scratch_->bearings.reserve(64);
     scratch_->group.bearings.reserve(64);
@@ -122,14 +124,11 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   const std::size_t keep = static_cast<std::size_t>(options_.keep);
   auto& best_few = scratch.best_few;  // the best `keep` full scores, best first
   best_few.clear();
-  auto& partial = scratch.partial;    // per candidate: scored without the scene's terms
-  partial.clear();
   auto score_candidate = [&](const Point& x) {
     bool complete = true;
     const csp::Score s = best_few.size() < keep ? framing.score(x) : framing.score_below(x, best_few.back(), complete);
     ++evaluations;
-    candidates.emplace_back(s, x);
-    partial.push_back(complete ? 0 : 1);
+    candidates.push_back({s, x, !complete});
     if (!complete) return;
     const auto at = std::upper_bound(best_few.begin(), best_few.end(), s,
                                      [](const csp::Score& a, const csp::Score& b) { return a.before(b); });
@@ -276,24 +275,20 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   order.resize(candidates.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (partial[a] != partial[b]) return partial[a] < partial[b];
-    const csp::Score& sa = candidates[a].first;
-    const csp::Score& sb = candidates[b].first;
-    if (sa.hard != sb.hard) return sa.hard < sb.hard;
-    if (sa.soft != sb.soft) return sa.soft < sb.soft;
+    if (candidates[a].partial != candidates[b].partial) return candidates[b].partial;
+    const csp::Score& sa = candidates[a].score;
+    const csp::Score& sb = candidates[b].score;
+    if (sa.before(sb)) return true;
+    if (sb.before(sa)) return false;
     return a < b;
   });
   auto& sorted = scratch.sorted;
   sorted.clear();
   for (std::uint32_t i : order) sorted.push_back(candidates[i]);
   candidates.swap(sorted);
-  auto& sorted_partial = scratch.sorted_partial;
-  sorted_partial.clear();
-  for (std::uint32_t i : order) sorted_partial.push_back(partial[i]);
-  partial.swap(sorted_partial);
 
-  csp::Score best = candidates.front().first;
-  Point best_x = candidates.front().second;
+  csp::Score best = candidates.front().score;
+  Point best_x = candidates.front().x;
   budget.note_best(evaluations);
 
   // 3. Compass search from a candidate, in place.
@@ -430,22 +425,25 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
   // left its fine one unfinished (problem 11 at 2 ms). The fine round runs again at the end
   // only if another candidate has overtaken it.
   constexpr double kClearLead = 0.75;
-  if (candidates.size() > 1 && partial[1]) {  // keep 1: the runner-up's full score, for the test
-    candidates[1].first = framing.score(candidates[1].second);
-    partial[1] = 0;
+  // A candidate scored in part gets its full score before it is compared or refined.
+  auto score_fully = [&](ShotSearchScratch::Candidate& c) {
+    if (!c.partial) return;
+    c.score = framing.score(c.x);
+    c.partial = false;
     ++evaluations;
-  }
+  };
+  if (candidates.size() > 1) score_fully(candidates[1]);  // keep 1: the runner-up, for the test
   const bool leader_first =
       options_.global && coarse > options_.min_step && candidates.size() > 1 &&
-      candidates[0].first.feasible() &&
-      candidates[0].first.soft <= kClearLead * candidates[1].first.soft;
+      candidates[0].score.feasible() &&
+      candidates[0].score.soft <= kClearLead * candidates[1].score.soft;
   std::optional<csp::Score> after_leader;
   // With a time limit, the coarse refinements stop at 70% of it, leaving the best's fine one
   // the rest.
   const double coarse_seconds = 0.7 * context.limits.time_limit_seconds;
   for (std::size_t i = 0; i < refined && !budget.exhausted(evaluations, iterations); ++i) {
     if (i > 0 && coarse_seconds > 0 && budget.elapsed_seconds() > coarse_seconds) break;
-    refine(candidates[i].first, candidates[i].second, options_.global || options_.hold_position ? 1.0 : 0.25, coarse);
+    refine(candidates[i].score, candidates[i].x, options_.global || options_.hold_position ? 1.0 : 0.25, coarse);
     if (i == 0 && leader_first && !budget.exhausted(evaluations, iterations)) {
       refine_finely();
       after_leader = best;
@@ -466,11 +464,8 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     std::uint64_t halton_index = static_cast<std::uint64_t>(options_.samples);
     for (std::uint64_t restart = 0; !budget.exhausted(evaluations, iterations); ++restart) {
       if (next < candidates.size()) {
-        if (partial[next]) {  // its score was a lower bound
-          candidates[next].first = framing.score(candidates[next].second);
-          ++evaluations;
-        }
-        refine(candidates[next].first, candidates[next].second, 1.0, coarse);
+        score_fully(candidates[next]);
+        refine(candidates[next].score, candidates[next].x, 1.0, coarse);
         ++next;
         continue;
       }

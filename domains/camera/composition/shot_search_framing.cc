@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace sightline::camera::shot_search_detail {
@@ -62,41 +63,23 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
 }
 
 csp::Score Framing::score(const Point& x) {
-  const csp::Assignment& v = values(x);
-  const std::optional<View> view = View::of(owner_->pose(v));
-  // An invalid view scores every property 0 (their violation() without a view): nothing to
-  // share, and nothing kept (a position's terms are kept only as scored with a valid view).
-  if (!view) return problem_->score(v);
-  const bool same_position = has_position_ && view->position() == scored_position_;
-  csp::Score total;
-  for (csp::ConstraintId id = 0; id < storage_.properties.size(); ++id) {
-    if (storage_.position_only[id] && same_position) {
-      total += storage_.at_position[id];
-      continue;
-    }
-    csp::Score term;
-    if (const ShotPropertyConstraint* property = storage_.properties[id]) {
-      term = property->score_of(1 - property->score(*view));  // its violation, view shared
-    } else {
-      term = problem_->constraint_score(id, v);
-    }
-    if (storage_.position_only[id]) storage_.at_position[id] = term;
-    total += term;
-  }
-  scored_position_ = view->position();
-  has_position_ = true;
-  return total;
+  // Nothing is below an infinite bound's reach: every term asked.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  bool complete = true;
+  return score_below(x, csp::Score{kInf, kInf}, complete);
 }
 
 csp::Score Framing::score_below(const Point& x, const csp::Score& bound, bool& complete) {
   complete = true;
   const csp::Assignment& v = values(x);
   const std::optional<View> view = View::of(owner_->pose(v));
+  // An invalid view scores every property 0 (their violation() without a view): nothing to
+  // share, and nothing kept (a position's terms are kept only as scored with a valid view).
   if (!view) return problem_->score(v);
   const bool same_position = has_position_ && view->position() == scored_position_;
   auto term_of = [&](csp::ConstraintId id) {
     if (const ShotPropertyConstraint* property = storage_.properties[id]) {
-      return property->score_of(1 - property->score(*view));
+      return property->score_of(1 - property->score(*view));  // its violation, view shared
     }
     return problem_->constraint_score(id, v);
   };
