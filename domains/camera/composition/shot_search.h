@@ -25,7 +25,10 @@
 //      every other one turned back so that one person placed on screen stays where they are
 //      (the rim of one's screen_position flat zone, followed while another's point is
 //      approached); a clear leader among the candidates (at most 3/4 of the runner-up's
-//      cost) is refined finely straight after coarsely, before the others;
+//      cost) is refined finely straight after coarsely, before the others; a fine
+//      refinement also takes a step that scores the same when it brings a person partly
+//      framed nearer the next sample in or out of their rect (Framing::framed_gap): a
+//      count is flat between its steps, and the best pose is often one sample away;
 //      with a time limit the other candidates follow, then restarts from the best pose
 //      shaken.
 // Every candidate is scored by the problem itself (the problem's own score, computed with

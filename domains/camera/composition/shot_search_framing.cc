@@ -36,9 +36,11 @@ Framing::Framing(const csp::Problem& problem, const CompositionProblem& owner,
     }
   }
   storage_.placed.clear();
+  storage_.framed.clear();
   const Shot& shot = owner.shot();
   for (std::size_t i = 0; i < shot.properties.size(); ++i) {
     if (shot.properties[i].kind == "screen_position") storage_.placed.push_back(i);
+    if (shot.properties[i].kind == "framed") storage_.framed.push_back(i);
   }
   centre_.setZero();
   for (int t : storage_.targets) centre_ += people[static_cast<std::size_t>(t)].aim;
@@ -114,6 +116,57 @@ csp::Score Framing::score_below(const Point& x, const csp::Score& bound, bool& c
   scored_position_ = view->position();
   has_position_ = true;
   return total;
+}
+
+double Framing::framed_gap(const Point& x) {
+  if (storage_.framed.empty()) return 0;
+  const std::optional<View> view = View::of(owner_->pose(values(x)));
+  if (!view) return std::numeric_limits<double>::infinity();
+  // A sample not in front is farther from any rect than one on screen can be.
+  constexpr double kNotInFront = 10;
+  const Shot& shot = owner_->shot();
+  double gap = 0;
+  for (std::size_t i : storage_.framed) {
+    const ShotProperty& p = shot.properties[i];
+    const PersonAtTime& person = owner_->world().people()[static_cast<std::size_t>(owner_->targets()[i][0])];
+    std::array<double, kPersonSamples> outside{}, inside{};  // distance out, depth in
+    std::size_t n_out = 0, n_in = 0;
+    for (const Eigen::Vector3d& q : person_samples(person.body)) {
+      const std::optional<Eigen::Vector2d> s = view->project(q);
+      if (!s) {
+        outside[n_out++] = kNotInFront;
+        continue;
+      }
+      const double dx = std::max(p.rect[0] - s->x(), s->x() - p.rect[2]);
+      const double dy = std::max(p.rect[1] - s->y(), s->y() - p.rect[3]);
+      if (dx <= 0 && dy <= 0) {
+        inside[n_in++] = -std::max(dx, dy);
+      } else {
+        outside[n_out++] = std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));
+      }
+    }
+    const double fraction = static_cast<double>(n_in) / kPersonSamples;
+    const double s = satisfaction(fraction, p.range, p.softness, false);
+    if (!(s > 0 && s < 1)) continue;
+    // The samples to move: as many as take the count to the range's nearer end.
+    double* distances = nullptr;
+    std::size_t count = 0, need = 0;
+    if (fraction < p.range.lo) {
+      need = static_cast<std::size_t>(std::ceil(p.range.lo * kPersonSamples - 1e-9)) - n_in;
+      distances = outside.data();
+      count = n_out;
+    } else {
+      need = n_in - static_cast<std::size_t>(std::floor(p.range.hi * kPersonSamples + 1e-9));
+      distances = inside.data();
+      count = n_in;
+    }
+    need = std::min(need, count);
+    std::partial_sort(distances, distances + need, distances + count);
+    double sum = 0;
+    for (std::size_t k = 0; k < need; ++k) sum += distances[k];
+    gap += (p.hard ? 1.0 : p.weight) * sum;
+  }
+  return gap;
 }
 
 const csp::Assignment& Framing::values(const Point& x) {

@@ -34,6 +34,7 @@ struct FramingStorage {
   std::vector<int> targets;   // the people the shot wants in the image
   std::vector<int> excluded;  // people the shot keeps out who are not also wanted
   std::vector<std::size_t> placed;  // the shot's screen_position properties
+  std::vector<std::size_t> framed;  // the shot's framed properties
   csp::Assignment values;
   // Per constraint of the problem: the shot property it is (nullptr for the others), whether
   // it reads the camera's position only, and its score at the last position scored.
@@ -73,6 +74,16 @@ class Framing {
   // steps, the candidates that cannot enter the best few). Terms that cannot be negative
   // added in the same order with some left out sum to no more (rounding is monotone).
   csp::Score score_below(const Point& x, const csp::Score& bound, bool& complete);
+
+  // How far x's view is from the next count of each framed property that is partly met
+  // (scoring above 0 and below 1): the screen distance (units) the samples it lacks must
+  // still travel, the nearest first (into its rect when it wants more of the person in,
+  // out of it when it wants fewer), weighted as the property. A count is flat between
+  // its steps, so a search comparing scores alone cannot tell which way the next sample
+  // is (26 of 27 framed from every pose round the best it found): this says, for poses
+  // that score the same. 0 when no framed property is partly met; +inf for an invalid view.
+  double framed_gap(const Point& x);
+  bool counts_framed() const { return !storage_.framed.empty(); }
 
   // How far (screen units, > 0) the view at x must turn to take the people the shot keeps
   // out who are on screen there off each edge of the image (0 left, 1 right, 2 bottom,

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -89,6 +90,78 @@ TEST(ShotSearchFraming, HoldOnScreenKeepsOnePersonWhereTheyAreAsTheCameraMoves) 
   }
   // The move is a real one: the other person's place on screen changes.
   EXPECT_GT(bob_moved, 40);
+}
+
+// Framing::framed_gap against this test's own count: the 27 samples of FORMATS.md projected
+// by the test's pinhole; for each framed property partly met, the distances the samples it
+// lacks are from its rect (wanted in) or from the rect's nearest edge (kept out), the
+// nearest first, as many as take the count to its range, times the weight. From poses
+// turned at random about one that frames both people, so that the counts fall anywhere.
+TEST(ShotSearchFraming, FramedGapIsTheDistanceTheMissingSamplesHaveToTravel) {
+  FramedShot shot(
+      "name: gap\n"
+      "actors:\n"
+      "  - {name: alice, trajectory: [{t: 0, position: [-0.6, 0, 0], yaw: 0}]}\n"
+      "  - {name: bob, trajectory: [{t: 0, position: [0.6, 0, 0], yaw: 180}]}\n"
+      "shot:\n"
+      "  fov: 50\n"
+      "  region: {min: [-4, 0.5, 2], max: [4, 4, 8]}\n"
+      "  properties:\n"
+      "    - {kind: framed, target: alice, rect: [0.1, 0.1, 0.9, 0.9], range: [0.7, 1], weight: 2}\n"
+      "    - {kind: framed, target: bob, rect: [0.5, 0, 1, 1], range: [0, 0.2], softness: 2}\n",
+      "gap.yaml");
+  const CompositionProblem& owner = shot.owner;
+  const auto& people = owner.world().people();
+  struct Wanted {
+    const char* name;
+    Eigen::Vector4d rect;
+    double lo, hi, softness, weight;
+  };
+  const Wanted wanted[] = {{"alice", {0.1, 0.1, 0.9, 0.9}, 0.7, 1, 1, 2},
+                           {"bob", {0.5, 0, 1, 1}, 0, 0.2, 2, 1}};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int partly = 0, nothing = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const shot_search_detail::Point x{0.5 * unit(rng), 1.6 + 0.3 * unit(rng), 4 + unit(rng),
+                                      25 * unit(rng), 15 * unit(rng), 50, 0};
+    const CameraPose pose = owner.pose(shot.framing.values(x));
+    double expected = 0;
+    for (const Wanted& w : wanted) {
+      const Aabb& body = people[*owner.world().find(w.name)].body;
+      std::vector<double> out, in;
+      for (double i : {0.1, 0.5, 0.9}) {
+        for (double j : {0.1, 0.5, 0.9}) {
+          for (double k : {0.1, 0.5, 0.9}) {
+            const Eigen::Vector3d q = body.min + Eigen::Vector3d(i, j, k).cwiseProduct(body.max - body.min);
+            ASSERT_GT((q - pose.position).dot((pose.look_at - pose.position).normalized()), 0.05);
+            const Eigen::Vector2d s = on_screen(pose, q);
+            const double dx = std::max(w.rect[0] - s.x(), s.x() - w.rect[2]);
+            const double dy = std::max(w.rect[1] - s.y(), s.y() - w.rect[3]);
+            if (dx <= 0 && dy <= 0) {
+              in.push_back(std::min({s.x() - w.rect[0], w.rect[2] - s.x(), s.y() - w.rect[1], w.rect[3] - s.y()}));
+            } else {
+              out.push_back(std::sqrt(std::pow(std::max(dx, 0.0), 2) + std::pow(std::max(dy, 0.0), 2)));
+            }
+          }
+        }
+      }
+      const double fraction = static_cast<double>(in.size()) / 27;
+      const double gap = fraction < w.lo ? w.lo - fraction : fraction > w.hi ? fraction - w.hi : 0;
+      if (gap == 0 || gap >= w.softness) continue;  // met, or scoring 0: no gap
+      ++partly;
+      std::vector<double>& moving = fraction < w.lo ? out : in;
+      // Samples to move: alice needs 19 of 27 in (0.7), bob at most 5 (0.2).
+      const std::size_t need = fraction < w.lo ? 19 - in.size() : in.size() - 5;
+      std::sort(moving.begin(), moving.end());
+      for (std::size_t k = 0; k < need; ++k) expected += w.weight * moving[k];
+    }
+    nothing += expected == 0;
+    EXPECT_NEAR(shot.framing.framed_gap(x), expected, 1e-9) << trial;
+  }
+  // The poses cover the cases: properties partly met, and poses where none is.
+  EXPECT_GT(partly, 100);
+  EXPECT_GT(nothing, 10);
 }
 
 // Three people among pillars, with every kind of property, one of them hard.
