@@ -54,7 +54,24 @@ std::string Spec::preview() const {
     case Type::kNull: return "nothing";
     case Type::kNumber: return "'" + short_number(number_) + "'";  // 5, not 5.000000
     case Type::kString: return "'" + (text_.size() > 40 ? text_.substr(0, 40) + "..." : text_) + "'";
-    case Type::kList: return "a list of " + std::to_string(items_.size());
+    case Type::kList: {
+      // A short list of scalars as written ([5, 2]: the values a message is about), else its
+      // length.
+      constexpr std::size_t kShown = 6;
+      constexpr std::size_t kLongest = 16;
+      const bool scalars = !items_.empty() && items_.size() <= kShown &&
+                           std::all_of(items_.begin(), items_.end(), [](const Spec& item) {
+                             return item.type_ == Type::kNumber ||
+                                    (item.type_ == Type::kString && item.text_.size() <= kLongest);
+                           });
+      if (!scalars) return "a list of " + std::to_string(items_.size());
+      std::string text = "[";
+      for (const Spec& item : items_) {
+        if (text.size() > 1) text += ", ";
+        text += item.type_ == Type::kNumber ? short_number(item.number_) : item.text_;
+      }
+      return text + "]";
+    }
     case Type::kMap: return "a mapping";
   }
   return "?";

@@ -46,8 +46,7 @@ inline double read_in_range(const csp::Spec& field, const std::string& what, dou
 inline Eigen::Vector3d read_vector3(const csp::Spec& field, const std::string& what) {
   const auto& items = field.items(what + " as [x, y, z]");
   if (items.size() != 3) {
-    field.fail("expected " + what + " as [x, y, z] (3 numbers), got a list of " +
-               std::to_string(items.size()));
+    field.fail("expected " + what + " as [x, y, z] (3 numbers), got " + field.preview());
   }
   return {items[0].as_number("x of " + what), items[1].as_number("y of " + what),
           items[2].as_number("z of " + what)};

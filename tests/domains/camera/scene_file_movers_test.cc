@@ -182,8 +182,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadMovers{"SizeNotANumber", mover_a("[1, big, 1]", kStill), 4,
                   "y of the size of mover 'a'"},
         BadMovers{"SizeTwoNumbers", mover_a("[1, 1]", kStill), 4,
-                  "the size of mover 'a' as [x, y, z] (3 numbers), got a list of 2"},
-        BadMovers{"SizeFourNumbers", mover_a("[1, 1, 1, 1]", kStill), 4, "got a list of 4"},
+                  "the size of mover 'a' as [x, y, z] (3 numbers), got [1, 1]"},
+        BadMovers{"SizeFourNumbers", mover_a("[1, 1, 1, 1]", kStill), 4, "got [1, 1, 1, 1]"},
         BadMovers{"SizeNotAList", mover_a("2", kStill), 4, "the size of mover 'a' as [x, y, z]"},
         BadMovers{"UnnamedMoverIsNumbered",
                   with_movers("  - {size: [1, 1, 1], path: [{t: 0, position: [0, 0, 0]}]}\n"
