@@ -115,6 +115,18 @@ bool corners_on_screen(const CameraPose& pose, const Aabb& box, std::vector<Eige
   return true;
 }
 
+// Screen points all beyond one edge of the image (left, right, below or above it).
+bool beyond_one_edge(const std::vector<Eigen::Vector2d>& points) {
+  bool left = true, right = true, below = true, above = true;
+  for (const auto& c : points) {
+    left = left && c.x() < 0;
+    right = right && c.x() > 1;
+    below = below && c.y() < 0;
+    above = above && c.y() > 1;
+  }
+  return left || right || below || above;
+}
+
 // shot-search's answer within `evaluations` (a budget that is the same on any machine).
 csp::Assignment shot_search(const CompositionProblem& problem, std::uint64_t evaluations) {
   register_composition_solvers(solvers::SolverRegistry::global());
@@ -160,14 +172,7 @@ TEST(CompositionSolvers, ShotSearchGivesUpOnePersonToKeepOutSomeoneAmongThem) {
   ASSERT_TRUE(corners_on_screen(pose, people[person("cal")].body, corners));
   for (const auto& c : corners) EXPECT_TRUE(c.minCoeff() >= 0 && c.maxCoeff() <= 1);
   if (corners_on_screen(pose, people[person("dee")].body, corners)) {
-    bool left = true, right = true, below = true, above = true;
-    for (const auto& c : corners) {
-      left = left && c.x() < 0;
-      right = right && c.x() > 1;
-      below = below && c.y() < 0;
-      above = above && c.y() > 1;
-    }
-    EXPECT_TRUE(left || right || below || above);
+    EXPECT_TRUE(beyond_one_edge(corners));
   }
 }
 
@@ -267,14 +272,7 @@ TEST(CompositionSolvers, ShotSearchWalksTheFlatOfACountToItsNextStep) {
     }
   }
   if (corners_on_screen(pose, sample_box("dee"), corners)) {
-    bool left = true, right = true, below = true, above = true;
-    for (const auto& c : corners) {
-      left = left && c.x() < 0;
-      right = right && c.x() > 1;
-      below = below && c.y() < 0;
-      above = above && c.y() > 1;
-    }
-    EXPECT_TRUE(left || right || below || above);
+    EXPECT_TRUE(beyond_one_edge(corners));
   }
 }
 
