@@ -148,19 +148,17 @@ double Framing::framed_gap(const Point& x) {
     const double fraction = static_cast<double>(n_in) / kPersonSamples;
     const double s = satisfaction(fraction, p.range, p.softness, false);
     if (!(s > 0 && s < 1)) continue;
-    // The samples to move: as many as take the count to the range's nearer end.
-    double* distances = nullptr;
-    std::size_t count = 0, need = 0;
-    if (fraction < p.range.lo) {
-      need = static_cast<std::size_t>(std::ceil(p.range.lo * kPersonSamples - 1e-9)) - n_in;
-      distances = outside.data();
-      count = n_out;
-    } else {
-      need = n_in - static_cast<std::size_t>(std::floor(p.range.hi * kPersonSamples + 1e-9));
-      distances = inside.data();
-      count = n_in;
-    }
-    need = std::min(need, count);
+    // The samples to move: as many as take the count to the range's nearer end (a count
+    // within [0, 27], whatever the range says).
+    const bool wants_more = fraction < p.range.lo;
+    const double end = wants_more ? std::ceil(p.range.lo * kPersonSamples - 1e-9)
+                                  : std::floor(p.range.hi * kPersonSamples + 1e-9);
+    const auto wanted = static_cast<long>(std::clamp(end, 0.0, static_cast<double>(kPersonSamples)));
+    const auto in = static_cast<long>(n_in);
+    double* distances = wants_more ? outside.data() : inside.data();
+    const std::size_t count = wants_more ? n_out : n_in;
+    const std::size_t need =
+        std::min(count, static_cast<std::size_t>(std::max(0L, wants_more ? wanted - in : in - wanted)));
     std::partial_sort(distances, distances + need, distances + count);
     double sum = 0;
     for (std::size_t k = 0; k < need; ++k) sum += distances[k];
