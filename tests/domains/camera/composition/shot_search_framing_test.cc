@@ -164,6 +164,46 @@ TEST(ShotSearchFraming, FramedGapIsTheDistanceTheMissingSamplesHaveToTravel) {
   EXPECT_GT(nothing, 10);
 }
 
+// A framed range beyond what a fraction can reach (FORMATS.md allows any lo <= hi): below 0,
+// every sample inside must leave the rect, so the gap is the sum of all their depths; above
+// 1, every sample outside must enter it, the sum of all their distances.
+TEST(ShotSearchFraming, FramedGapOfARangeNoFractionReachesCountsEverySample) {
+  for (const bool below : {true, false}) {
+    FramedShot shot(std::string("name: beyond\n"
+                                "actors:\n"
+                                "  - {name: alice, trajectory: [{t: 0, position: [0, 0, 0], yaw: 0}]}\n"
+                                "shot:\n"
+                                "  fov: 50\n"
+                                "  region: {min: [-4, 0.5, 2], max: [4, 4, 8]}\n"
+                                "  properties:\n"
+                                "    - {kind: framed, target: alice, rect: [0.5, 0, 1, 1], softness: 3, range: ") +
+                        (below ? "[-1, -0.5]" : "[1.5, 2]") + "}\n",
+                    "beyond.yaml");
+    const auto& body = shot.owner.world().people()[0].body;
+    const shot_search_detail::Point x{0.4, 1.5, 4, 0, 0, 50, 0};  // alice across the rect's edge
+    const CameraPose pose = shot.owner.pose(shot.framing.values(x));
+    double in_depths = 0, out_distances = 0;
+    int in = 0;
+    for (double i : {0.1, 0.5, 0.9}) {
+      for (double j : {0.1, 0.5, 0.9}) {
+        for (double k : {0.1, 0.5, 0.9}) {
+          const Eigen::Vector2d s = on_screen(pose, body.min + Eigen::Vector3d(i, j, k).cwiseProduct(body.max - body.min));
+          ASSERT_TRUE(s.y() > 0 && s.y() < 1);
+          if (s.x() >= 0.5 && s.x() <= 1) {
+            ++in;
+            in_depths += std::min({s.x() - 0.5, 1 - s.x(), s.y(), 1 - s.y()});
+          } else {
+            out_distances += std::max(0.5 - s.x(), s.x() - 1);
+          }
+        }
+      }
+    }
+    ASSERT_GT(in, 0);
+    ASSERT_LT(in, 27);
+    EXPECT_NEAR(shot.framing.framed_gap(x), below ? in_depths : out_distances, 1e-9) << below;
+  }
+}
+
 // Three people among pillars, with every kind of property, one of them hard.
 constexpr const char* kThreeAmongPillars =
     "name: three among pillars\n"
