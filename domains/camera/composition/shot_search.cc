@@ -310,12 +310,20 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
     std::array<double, kDims> step{move, move, move, 4 * scale, 4 * scale,
                                    shot.fov.fixed() ? 0.0 : 4.0 * scale,
                                    shot.roll.fixed() ? 0.0 : 4.0 * scale};
-    // x's framed_gap, once asked (NaN: not yet, or x has moved since).
-    double x_gap = std::numeric_limits<double>::quiet_NaN();
     // Plateaus are walked in the fine refinements only (those that poll): a coarse one is a
     // first look at a candidate, and walking its plateaus spends the budget on poses that
     // may not be kept.
     const bool on_plateaus = polls > 0 && framing.counts_framed();
+    // x's framed_gap, once asked (kUnknown: not yet, or x has moved since).
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    double x_gap = kUnknown;
+    // x becomes y, scoring s, with y's framed_gap (kUnknown when not asked).
+    auto take = [&](const csp::Score& s, const Point& y, double y_gap) {
+      score = s;
+      x = y;
+      x_gap = y_gap;
+      return true;
+    };
     // Moves x to y (clamped into the domains) when y scores better, or the same (to the
     // tolerance of Score::better_than) with a smaller framed_gap: on the plateau of a count,
     // toward its next step.
@@ -325,12 +333,7 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       bool complete = false;
       csp::Score s = framing.score_below(y, score, complete);
       ++evaluations;
-      if (complete && s.better_than(score)) {
-        score = s;
-        x = y;
-        x_gap = std::numeric_limits<double>::quiet_NaN();
-        return true;
-      }
+      if (complete && s.better_than(score)) return take(s, y, kUnknown);
       // A partial score is no more than the full one: when it is already worse, so is y.
       if (!on_plateaus || score.better_than(s)) return false;
       // Nothing partly framed at x (a shot met, or its counts at 0): no plateau to walk.
@@ -339,21 +342,13 @@ void ShotSearch::solve_into(const csp::Problem& problem, std::span<const double>
       if (!complete) {
         s = framing.score(y);
         ++evaluations;
-        if (s.better_than(score) || score.better_than(s)) {
-          // Rare (the left-out terms were 0 within the tolerance): decide as above.
-          if (!s.better_than(score)) return false;
-          score = s;
-          x = y;
-          x_gap = std::numeric_limits<double>::quiet_NaN();
-          return true;
-        }
+        // Better only within Score::better_than's tolerance of a partial score that was not.
+        if (s.better_than(score)) return take(s, y, kUnknown);
+        if (score.better_than(s)) return false;
       }
       const double y_gap = framing.framed_gap(y);
       if (!(y_gap < x_gap - 1e-9)) return false;
-      score = s;
-      x = y;
-      x_gap = y_gap;
-      return true;
+      return take(s, y, y_gap);
     };
     // The last held axis move that paid (see below), as person x 6 + axis move; -1 when the
     // last move that paid was another.
